@@ -1,0 +1,570 @@
+#include "base/schema.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <toml.hpp>
+
+namespace tehl::internal {
+namespace {
+
+std::string KindName(ValueKind k) {
+  switch (k) {
+    case ValueKind::kBool: return "a boolean (true or false)";
+    case ValueKind::kInt: return "an integer";
+    case ValueKind::kDouble: return "a number";
+    case ValueKind::kString: return "a string";
+    case ValueKind::kDoubleArray: return "an array of numbers";
+  }
+  return "?";
+}
+
+std::string UnitSuffix(const std::string& unit) {
+  if (unit.empty() || unit == "-") return "";
+  return " [" + unit + "]";
+}
+
+std::string RangeText(const KeySpec& k) {
+  auto num = [&](double x) {
+    return k.kind == ValueKind::kInt ? std::to_string(static_cast<long long>(x)) : FormatReal(x);
+  };
+  std::string s;
+  if (k.min) s += (k.min_inclusive ? ">= " : "> ") + num(*k.min);
+  if (k.max) {
+    if (!s.empty()) s += " and ";
+    s += (k.max_inclusive ? "<= " : "< ") + num(*k.max);
+  }
+  return s;
+}
+
+std::string AllowedText(const KeySpec& k) {
+  if (!k.choices.empty()) {
+    std::string s = "one of ";
+    for (size_t i = 0; i < k.choices.size(); ++i) s += (i ? ", \"" : "\"") + k.choices[i] + "\"";
+    return s;
+  }
+  std::string s = KindName(k.kind);
+  const std::string r = RangeText(k);
+  if (!r.empty()) s += " " + r;
+  return s + UnitSuffix(k.unit);
+}
+
+std::string JoinNames(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s.empty() ? "none" : s;
+}
+
+std::string ShowToml(const toml::value& v) {
+  if (v.is_string()) return "\"" + v.as_string().str + "\"";
+  if (v.is_integer()) return std::to_string(v.as_integer());
+  if (v.is_floating()) return FormatReal(v.as_floating());
+  if (v.is_boolean()) return v.as_boolean() ? "true" : "false";
+  if (v.is_table()) return "{table}";
+  if (v.is_array()) {
+    std::string s = "[";
+    const auto& a = v.as_array();
+    for (size_t i = 0; i < a.size() && i < 8; ++i) s += (i ? ", " : "") + ShowToml(a[i]);
+    if (a.size() > 8) s += ", ...";
+    return s + "]";
+  }
+  std::ostringstream o;
+  o << v;
+  std::string s = o.str();
+  if (s.size() > 60) s = s.substr(0, 57) + "...";
+  return s;
+}
+
+bool InRange(const KeySpec& k, double x) {
+  if (!std::isfinite(x)) return false;
+  if (k.min && (k.min_inclusive ? x < *k.min : x <= *k.min)) return false;
+  if (k.max && (k.max_inclusive ? x > *k.max : x >= *k.max)) return false;
+  return true;
+}
+
+// Parses a TOML literal from a schema default (a programming error if it fails).
+Value ParseDefault(const KeySpec& k) {
+  if (k.default_toml.empty()) return std::monostate{};
+  std::istringstream in("x = " + k.default_toml);
+  const toml::value doc = toml::parse(in, "<default>");
+  const toml::value& v = doc.as_table().at("x");
+  switch (k.kind) {
+    case ValueKind::kBool: return v.as_boolean();
+    case ValueKind::kInt: return static_cast<long long>(v.as_integer());
+    case ValueKind::kDouble:
+      return v.is_integer() ? static_cast<double>(v.as_integer()) : v.as_floating();
+    case ValueKind::kString: return v.as_string().str;
+    case ValueKind::kDoubleArray: {
+      std::vector<double> out;
+      for (const auto& e : v.as_array())
+        out.push_back(e.is_integer() ? static_cast<double>(e.as_integer()) : e.as_floating());
+      return out;
+    }
+  }
+  return std::monostate{};
+}
+
+}  // namespace
+
+std::string FormatReal(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, x);
+  std::string s(buf, r.ptr);
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string FormatValue(const Value& v) {
+  struct V {
+    std::string operator()(std::monostate) const { return ""; }
+    std::string operator()(bool b) const { return b ? "true" : "false"; }
+    std::string operator()(long long i) const { return std::to_string(i); }
+    std::string operator()(double d) const { return FormatReal(d); }
+    std::string operator()(const std::string& s) const {
+      std::string q = "\"";
+      for (char c : s) {
+        if (c == '"' || c == '\\') q += '\\';
+        q += c;
+      }
+      return q + "\"";
+    }
+    std::string operator()(const std::vector<double>& a) const {
+      std::string s = "[";
+      for (size_t i = 0; i < a.size(); ++i) s += (i ? ", " : "") + FormatReal(a[i]);
+      return s + "]";
+    }
+  };
+  return std::visit(V{}, v);
+}
+
+const KeySpec* SectionSpec::Find(std::string_view key) const {
+  for (const auto& k : keys)
+    if (k.name == key) return &k;
+  return nullptr;
+}
+
+const SectionSpec* Schema::Find(std::string_view section) const {
+  for (const auto& s : sections)
+    if (s.name == section) return &s;
+  return nullptr;
+}
+
+std::string Schema::PrintDefaults() const {
+  std::ostringstream o;
+  o << "# Every key of a tehl " << kind << " file with its default, unit and meaning.\n"
+    << "# Keys marked (required) have no default: the value shown is an example.\n";
+  for (const auto& sec : sections) {
+    o << "\n";
+    if (!sec.name.empty()) o << "[" << sec.name << "]";
+    o << (sec.name.empty() ? "# " : "  # ") << sec.meaning
+      << (sec.required ? " (required section)" : " (optional section)") << "\n";
+    for (const auto& k : sec.keys) {
+      std::string lhs;
+      const std::string& val = k.default_toml.empty() ? k.example : k.default_toml;
+      if (val.empty())
+        lhs = "# " + k.name + " =";  // optional key without default: commented out
+      else
+        lhs = k.name + " = " + val;
+      o << lhs;
+      for (size_t pad = lhs.size(); pad < 40; ++pad) o << ' ';
+      o << " # " << (k.unit.empty() ? "" : "[" + k.unit + "] ") << k.meaning;
+      if (k.required) o << " (required)";
+      if (!k.choices.empty() || k.min || k.max) o << "; allowed: " << AllowedText(k);
+      o << "\n";
+    }
+  }
+  return o.str();
+}
+
+KeySpec Real(std::string name, std::string unit, std::string def, std::string meaning,
+             std::optional<double> min, std::optional<double> max, bool min_inc, bool max_inc) {
+  KeySpec k;
+  k.name = std::move(name);
+  k.kind = ValueKind::kDouble;
+  k.unit = std::move(unit);
+  k.default_toml = std::move(def);
+  k.meaning = std::move(meaning);
+  k.min = min;
+  k.max = max;
+  k.min_inclusive = min_inc;
+  k.max_inclusive = max_inc;
+  return k;
+}
+
+KeySpec Positive(std::string name, std::string unit, std::string def, std::string meaning) {
+  return Real(std::move(name), std::move(unit), std::move(def), std::move(meaning), 0.0,
+              std::nullopt, false);
+}
+
+KeySpec Integer(std::string name, std::string unit, std::string def, std::string meaning,
+                std::optional<double> min, std::optional<double> max) {
+  KeySpec k = Real(std::move(name), std::move(unit), std::move(def), std::move(meaning), min, max);
+  k.kind = ValueKind::kInt;
+  return k;
+}
+
+KeySpec Flag(std::string name, std::string def, std::string meaning) {
+  KeySpec k;
+  k.name = std::move(name);
+  k.kind = ValueKind::kBool;
+  k.default_toml = std::move(def);
+  k.meaning = std::move(meaning);
+  return k;
+}
+
+KeySpec Text(std::string name, std::string def, std::string meaning,
+             std::vector<std::string> choices) {
+  KeySpec k;
+  k.name = std::move(name);
+  k.kind = ValueKind::kString;
+  k.default_toml = std::move(def);
+  k.meaning = std::move(meaning);
+  k.choices = std::move(choices);
+  return k;
+}
+
+KeySpec Reals(std::string name, std::string unit, std::string def, std::string meaning,
+              std::optional<double> min) {
+  KeySpec k = Real(std::move(name), std::move(unit), std::move(def), std::move(meaning), min);
+  k.kind = ValueKind::kDoubleArray;
+  return k;
+}
+
+KeySpec Temperature(std::string name, std::string def, std::string meaning) {
+  // Absolute temperatures only: anything below 200 K is almost surely degrees Celsius.
+  return Real(std::move(name), "K", std::move(def), std::move(meaning), 200.0, 1000.0);
+}
+
+KeySpec Required(KeySpec k, std::string example) {
+  k.required = true;
+  k.example = std::move(example);
+  k.default_toml.clear();
+  return k;
+}
+
+// ---------------------------------------------------------------------------------------
+class DocumentReader {
+ public:
+  DocumentReader(const Schema& schema, Document* doc) : schema_(schema), doc_(*doc) {}
+
+  void Read(const toml::value& root) {
+    if (!root.is_table()) return;
+    const SectionSpec* top = schema_.Find("");
+    ReadTable(root.as_table(), "", top, 0);
+    // Defaults for required sections that are missing, and missing-section problems.
+    for (const auto& sec : schema_.sections) {
+      const bool present = sec.name.empty() || doc_.section_lines_.count(sec.name);
+      if (!present && sec.required) {
+        Add(0, "[" + sec.name + "]", "", "required section is missing",
+            "a [" + sec.name + "] table: " + sec.meaning);
+      }
+      if (present || sec.required) FillDefaults(sec);
+    }
+  }
+
+ private:
+  void Add(int line, std::string key, std::string value, std::string rule, std::string allowed) {
+    doc_.problems_.Add({doc_.path_, line, std::move(key), std::move(value), std::move(rule),
+                        std::move(allowed)});
+  }
+
+  static std::vector<std::pair<std::string, const toml::value*>> ByLine(const toml::table& t) {
+    std::vector<std::pair<std::string, const toml::value*>> items;
+    for (const auto& [k, v] : t) items.emplace_back(k, &v);
+    std::sort(items.begin(), items.end(), [](const auto& a, const auto& b) {
+      const auto la = a.second->location().line(), lb = b.second->location().line();
+      return la != lb ? la < lb : a.first < b.first;
+    });
+    return items;
+  }
+
+  std::vector<std::string> ChildSections(const std::string& prefix) const {
+    std::vector<std::string> out;
+    for (const auto& s : schema_.sections) {
+      if (s.name.empty()) continue;
+      const std::string p = prefix.empty() ? "" : prefix + ".";
+      if (s.name.rfind(p, 0) == 0 && s.name.find('.', p.size()) == std::string::npos)
+        out.push_back("[" + s.name + "]");
+    }
+    return out;
+  }
+
+  void ReadTable(const toml::table& t, const std::string& name, const SectionSpec* spec,
+                 int line) {
+    if (!name.empty()) doc_.section_lines_[name] = line;
+    for (const auto& [key, vp] : ByLine(t)) {
+      const toml::value& v = *vp;
+      const int vline = static_cast<int>(v.location().line());
+      const std::string full = name.empty() ? key : name + "." + key;
+      if (v.is_table()) {
+        if (const SectionSpec* sub = schema_.Find(full)) {
+          ReadTable(v.as_table(), full, sub, vline);
+          continue;
+        }
+      }
+      const KeySpec* k = spec ? spec->Find(key) : nullptr;
+      if (!k) {
+        if (v.is_table()) {
+          Add(vline, "[" + full + "]", "", "unknown section",
+              "known sections: " + JoinNames(ChildSections(name)));
+        } else {
+          std::vector<std::string> known;
+          if (spec)
+            for (const auto& kk : spec->keys) known.push_back(kk.name);
+          Add(vline, full, ShowToml(v), "unknown key",
+              (name.empty() ? std::string("top-level keys: ") : "keys of [" + name + "]: ") +
+                  JoinNames(known));
+        }
+        continue;
+      }
+      ReadValue(*k, full, v, vline);
+    }
+  }
+
+  bool Number(const toml::value& v, double* x) {
+    if (v.is_integer()) {
+      *x = static_cast<double>(v.as_integer());
+      return true;
+    }
+    if (v.is_floating()) {
+      *x = v.as_floating();
+      return true;
+    }
+    return false;
+  }
+
+  void ReadValue(const KeySpec& k, const std::string& full, const toml::value& v, int line) {
+    Document::Entry e;
+    e.line = line;
+    e.given = true;
+    const std::string shown = ShowToml(v);
+    auto wrong_type = [&] { Add(line, full, shown, "wrong type: expected " + KindName(k.kind),
+                                AllowedText(k)); };
+    auto range_problem = [&](double x) {
+      std::string rule = "out of range: must be " + RangeText(k) + UnitSuffix(k.unit);
+      if (k.unit == "K" && x < 200.0 && x > -273.15) rule += " (did you give degrees Celsius?)";
+      if (!std::isfinite(x)) rule = "must be a finite number";
+      Add(line, full, shown, rule, AllowedText(k));
+    };
+    switch (k.kind) {
+      case ValueKind::kBool:
+        if (!v.is_boolean()) return wrong_type();
+        e.value = v.as_boolean();
+        break;
+      case ValueKind::kInt: {
+        if (!v.is_integer()) {
+          double x = 0;
+          if (Number(v, &x) && std::isfinite(x) && x == std::floor(x))
+            return Add(line, full, shown, "must be written as an integer (no decimal point)",
+                       AllowedText(k));
+          return wrong_type();
+        }
+        const long long i = v.as_integer();
+        if (!InRange(k, static_cast<double>(i))) return range_problem(static_cast<double>(i));
+        e.value = i;
+        break;
+      }
+      case ValueKind::kDouble: {
+        double x = 0;
+        if (!Number(v, &x)) return wrong_type();
+        if (!InRange(k, x)) return range_problem(x);
+        e.value = x;
+        break;
+      }
+      case ValueKind::kString: {
+        if (!v.is_string()) return wrong_type();
+        const std::string s = v.as_string().str;
+        if (!k.choices.empty() &&
+            std::find(k.choices.begin(), k.choices.end(), s) == k.choices.end())
+          return Add(line, full, shown, "unknown value", AllowedText(k));
+        e.value = s;
+        break;
+      }
+      case ValueKind::kDoubleArray: {
+        if (!v.is_array()) return wrong_type();
+        std::vector<double> a;
+        for (const auto& el : v.as_array()) {
+          double x = 0;
+          if (!Number(el, &x)) return wrong_type();
+          if (!InRange(k, x)) return range_problem(x);
+          a.push_back(x);
+        }
+        e.value = std::move(a);
+        break;
+      }
+    }
+    doc_.entries_[full] = std::move(e);
+  }
+
+  void FillDefaults(const SectionSpec& sec) {
+    for (const auto& k : sec.keys) {
+      const std::string full = Document::FullKey(sec.name, k.name);
+      if (doc_.entries_.count(full)) continue;
+      if (k.required) {
+        // A key given with a bad value was already reported; report only absent ones.
+        if (!Written(sec.name, k.name)) {
+          const auto it = doc_.section_lines_.find(sec.name);
+          Add(it == doc_.section_lines_.end() ? 0 : it->second, full, "",
+              "required key is missing", AllowedText(k) + ", e.g. " + k.name + " = " + k.example);
+        }
+        continue;
+      }
+      Document::Entry e;
+      e.value = ParseDefault(k);
+      if (!std::holds_alternative<std::monostate>(e.value)) doc_.entries_[full] = std::move(e);
+    }
+  }
+
+  bool Written(const std::string& section, const std::string& key) const {
+    const std::string full = Document::FullKey(section, key);
+    for (const auto& p : doc_.problems_.problems())
+      if (p.key == full) return true;
+    return false;
+  }
+
+  const Schema& schema_;
+  Document& doc_;
+};
+
+Document Document::ReadString(const Schema& schema, const std::string& text,
+                              const std::string& name) {
+  Document doc;
+  doc.schema_ = &schema;
+  doc.path_ = name;
+  toml::value root;
+  try {
+    std::istringstream in(text);
+    root = toml::parse(in, name);
+  } catch (const toml::exception& e) {
+    std::string msg = e.what();
+    // toml11 prints "[error] toml::parse_...: <reason>\n --> file\n ..." : keep the reason.
+    const auto nl = msg.find('\n');
+    if (nl != std::string::npos) msg = msg.substr(0, nl);
+    const auto colon = msg.find(": ");
+    if (msg.rfind("[error]", 0) == 0 && colon != std::string::npos) msg = msg.substr(colon + 2);
+    doc.problems_.Add({name, static_cast<int>(e.location().line()), "(syntax)", "",
+                       "not valid TOML: " + msg, "a TOML document (https://toml.io)"});
+    return doc;
+  } catch (const std::exception& e) {
+    doc.problems_.Add({name, 0, "(file)", "", std::string("cannot be read as TOML: ") + e.what(),
+                       "a UTF-8 TOML text file"});
+    return doc;
+  }
+  DocumentReader(schema, &doc).Read(root);
+  return doc;
+}
+
+Document Document::ReadFile(const Schema& schema, const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    Document doc;
+    doc.schema_ = &schema;
+    doc.path_ = path;
+    doc.problems_.Add({path, 0, "(file)", "", "cannot open the " + schema.kind + " file",
+                       "an existing, readable file"});
+    return doc;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  if (s.find('\0') != std::string::npos) {
+    Document doc;
+    doc.schema_ = &schema;
+    doc.path_ = path;
+    const auto line = 1 + std::count(s.begin(), s.begin() + s.find('\0'), '\n');
+    doc.problems_.Add({path, static_cast<int>(line), "(file)", "",
+                       "contains a NUL byte: binary data, not a text file", "a TOML text file"});
+    return doc;
+  }
+  return ReadString(schema, s, path);
+}
+
+std::string Document::FullKey(std::string_view section, std::string_view key) {
+  if (section.empty()) return std::string(key);
+  return std::string(section) + "." + std::string(key);
+}
+
+const Document::Entry* Document::Get(std::string_view section, std::string_view key) const {
+  const auto it = entries_.find(FullKey(section, key));
+  return it == entries_.end() ? nullptr : &it->second;
+}
+
+bool Document::HasSection(std::string_view section) const {
+  return section_lines_.count(std::string(section)) > 0;
+}
+bool Document::Given(std::string_view s, std::string_view k) const {
+  const Entry* e = Get(s, k);
+  return e && e->given;
+}
+bool Document::Has(std::string_view s, std::string_view k) const { return Get(s, k) != nullptr; }
+int Document::Line(std::string_view s, std::string_view k) const {
+  if (const Entry* e = Get(s, k); e && e->line > 0) return e->line;
+  const auto it = section_lines_.find(std::string(s));
+  return it == section_lines_.end() ? 0 : it->second;
+}
+
+double Document::Real(std::string_view s, std::string_view k) const {
+  const Entry* e = Get(s, k);
+  if (!e) return 0.0;
+  TEHL_ASSERT(std::holds_alternative<double>(e->value), "key is not a real");
+  const double* d = std::get_if<double>(&e->value);
+  return d ? *d : 0.0;
+}
+long long Document::Int(std::string_view s, std::string_view k) const {
+  const Entry* e = Get(s, k);
+  const long long* i = e ? std::get_if<long long>(&e->value) : nullptr;
+  return i ? *i : 0;
+}
+bool Document::Bool(std::string_view s, std::string_view k) const {
+  const Entry* e = Get(s, k);
+  const bool* b = e ? std::get_if<bool>(&e->value) : nullptr;
+  return b ? *b : false;
+}
+std::string Document::String(std::string_view s, std::string_view k) const {
+  const Entry* e = Get(s, k);
+  const std::string* v = e ? std::get_if<std::string>(&e->value) : nullptr;
+  return v ? *v : std::string();
+}
+std::vector<double> Document::Reals(std::string_view s, std::string_view k) const {
+  const Entry* e = Get(s, k);
+  const auto* v = e ? std::get_if<std::vector<double>>(&e->value) : nullptr;
+  return v ? *v : std::vector<double>();
+}
+
+std::string Document::Show(std::string_view s, std::string_view k) const {
+  const Entry* e = Get(s, k);
+  return e ? FormatValue(e->value) : std::string();
+}
+
+void Document::Problem(std::string_view section, std::string_view key, std::string rule,
+                       std::string allowed) {
+  const std::string shown =
+      key.empty() ? "[" + std::string(section) + "]" : FullKey(section, key);
+  problems_.Add({path_, Line(section, key), shown, key.empty() ? "" : Show(section, key),
+                 std::move(rule), std::move(allowed)});
+}
+
+std::string Document::ToToml() const {
+  std::ostringstream o;
+  o << "# " << (schema_ ? schema_->kind : "input") << " as run, defaults filled: " << path_
+    << "\n";
+  if (!schema_) return o.str();
+  for (const auto& sec : schema_->sections) {
+    if (!sec.name.empty() && !HasSection(sec.name) && !sec.required) continue;
+    if (!sec.name.empty()) o << "\n[" << sec.name << "]\n";
+    for (const auto& k : sec.keys) {
+      const Entry* e = Get(sec.name, k.name);
+      if (!e) continue;
+      o << k.name << " = " << FormatValue(e->value);
+      if (!k.unit.empty() && k.unit != "-") o << "  # [" << k.unit << "]";
+      o << "\n";
+    }
+  }
+  return o.str();
+}
+
+}  // namespace tehl::internal

@@ -1,0 +1,6 @@
+# Base: error reporting, units, input schemas. Below every layer.
+list(APPEND TEHL_SOURCES
+  src/base/error.cpp
+  src/base/units.cpp
+  src/base/schema.cpp
+)

@@ -1,0 +1,36 @@
+// tehl case --print-default | --check FILE...
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "scene/case_reader.hpp"
+#include "tehl/scene/case_schema.hpp"
+
+namespace tehl::cli {
+
+Command AddCaseCommand(CLI::App& app) {
+  struct Args {
+    bool print_default = false;
+    std::vector<std::string> check;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* sub = app.add_subcommand("case", "Print the case-file schema or check case files");
+  sub->add_flag("--print-default", args->print_default,
+                "Print every key with its default, unit and meaning (a valid case template)");
+  sub->add_option("--check", args->check, "Check case files; exit 2 with every problem found")
+      ->expected(1, -1);
+  sub->require_option(1);
+  return {sub, [args]() {
+            if (args->print_default) std::cout << CaseDefaultsText();
+            ProblemList all;
+            for (const auto& path : args->check) {
+              const internal::Document doc = internal::ReadCaseDocument(path);
+              if (doc.problems().empty()) std::cout << path << ": ok\n";
+              all.Append(doc.problems());
+            }
+            all.ThrowIfAny();
+            return kExitOk;
+          }};
+}
+
+}  // namespace tehl::cli

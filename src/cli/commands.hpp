@@ -1,0 +1,28 @@
+// Subcommands of the `tehl` program. Each Add*Command adds its CLI11 subcommand to the app
+// and returns how to run it once parsed. A runner returns the exit code: 0 success, 1 a
+// solver that did not converge, 2 bad input (runners throw InputError for that; main()
+// prints it and returns 2).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace tehl::cli {
+
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+Command AddCaseCommand(CLI::App& app);       // tehl case --print-default | --check FILE
+Command AddLubricantCommand(CLI::App& app);  // tehl lubricant NAME --p ... --T ...
+Command AddGearCommand(CLI::App& app);       // tehl gear CASE [--csv F] [--profile F]
+Command AddRunCommand(CLI::App& app);        // tehl run CASE
+
+// Exit codes.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitNotConverged = 1;
+inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitInternal = 3;
+
+}  // namespace tehl::cli

@@ -1,0 +1,5 @@
+# The `tehl` program: main.cpp and one file per subcommand (linked into the executable only).
+list(APPEND TEHL_CLI_SOURCES
+  src/cli/main.cpp
+  src/cli/case_command.cpp
+)

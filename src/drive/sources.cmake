@@ -1,0 +1,3 @@
+# drive layer sources (one per line, no globbing).
+list(APPEND TEHL_SOURCES
+)

@@ -1,0 +1,3 @@
+# ehl layer sources (one per line, no globbing).
+list(APPEND TEHL_SOURCES
+)

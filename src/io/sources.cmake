@@ -1,0 +1,3 @@
+# io layer sources (one per line, no globbing).
+list(APPEND TEHL_SOURCES
+)

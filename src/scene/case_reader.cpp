@@ -1,0 +1,109 @@
+#include "scene/case_reader.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "tehl/scene/case_schema.hpp"
+
+namespace tehl::internal {
+namespace fs = std::filesystem;
+
+std::string ResolveLubricantPath(const std::string& name, const std::string& case_path) {
+  if (name.empty()) return "";
+  std::vector<fs::path> candidates;
+  const fs::path as_given(name);
+  const fs::path case_dir = fs::path(case_path).parent_path();
+  candidates.push_back(as_given);
+  if (!case_dir.empty()) candidates.push_back(case_dir / as_given);
+  const std::string file = as_given.has_extension() ? name : name + ".toml";
+  if (const char* env = std::getenv("TEHL_LUBRICANT_DIR")) candidates.push_back(fs::path(env) / file);
+  if (!case_dir.empty()) candidates.push_back(case_dir / ".." / "lubricants" / file);
+  candidates.push_back(fs::path(TEHL_SOURCE_LUBRICANT_DIR) / file);
+  candidates.push_back(fs::path(TEHL_INSTALL_LUBRICANT_DIR) / file);
+  for (const auto& c : candidates) {
+    std::error_code ec;
+    if (fs::is_regular_file(c, ec)) return c.lexically_normal().string();
+  }
+  return "";
+}
+
+Document ReadCaseDocument(const std::string& path) {
+  Document doc = Document::ReadFile(CaseSchema(), path);
+  if (!doc.problems().empty() && !doc.HasSection("lubricant") && !doc.HasSection("gear") &&
+      !doc.HasSection("contact"))
+    return doc;  // unreadable file: the cross-key rules would only repeat the problem
+
+  const bool gear = doc.HasSection("gear") || doc.HasSection("gear.pinion") ||
+                    doc.HasSection("gear.wheel");
+  const bool contact = doc.HasSection("contact");
+  if (gear == contact) {
+    doc.Problem(gear ? "contact" : "gear", "", gear ? "a case has either [gear] or [contact], "
+                "not both" : "a case needs a [gear] pair or a [contact]",
+                "[gear] with [gear.pinion], [gear.wheel] and [operating]; or [contact]");
+  }
+  if (gear) {
+    for (const char* member : {"gear.pinion", "gear.wheel"})
+      if (!doc.HasSection(member))
+        doc.Problem(member, "", "required section is missing for a gear case",
+                    std::string("a [") + member + "] table with at least teeth");
+    const int speeds = doc.Given("operating", "pinion_speed_rpm") +
+                       doc.Given("operating", "pinion_speed_rad_s");
+    const int loads = doc.Given("operating", "power_w") + doc.Given("operating", "pinion_torque_nm");
+    if (speeds != 1)
+      doc.Problem("operating", "pinion_speed_rpm",
+                  speeds ? "give the speed once, not twice" : "the pinion speed is missing",
+                  "exactly one of pinion_speed_rpm, pinion_speed_rad_s");
+    if (loads != 1)
+      doc.Problem("operating", "power_w",
+                  loads ? "give the load once, not twice" : "the transmitted load is missing",
+                  "exactly one of power_w, pinion_torque_nm");
+  } else if (doc.HasSection("operating")) {
+    doc.Problem("operating", "", "[operating] belongs to a gear case",
+                "speeds and load of a [contact] case go in [contact]");
+  }
+  if (contact) {
+    const auto t = doc.Reals("contact", "time_s");
+    for (const char* key : {"load_table_n_per_m", "speed_1_table_m_s", "speed_2_table_m_s"}) {
+      if (doc.Given("contact", key) && doc.Reals("contact", key).size() != t.size())
+        doc.Problem("contact", key, "has " + std::to_string(doc.Reals("contact", key).size()) +
+                    " entries but time_s has " + std::to_string(t.size()),
+                    "one entry per time_s value");
+    }
+    for (size_t i = 1; i < t.size(); ++i)
+      if (!(t[i] > t[i - 1])) {
+        doc.Problem("contact", "time_s", "must increase strictly", "increasing times [s]");
+        break;
+      }
+    if (doc.Int("contact", "steps") > 0 && t.size() < 2)
+      doc.Problem("contact", "steps", "a transient run needs time tables",
+                  "time_s with at least two entries, or steps = 0 for a steady solve");
+  }
+
+  const bool rough_effect = doc.Bool("effects", "roughness");
+  for (const char* s : {"surfaces.surface1", "surfaces.surface2"}) {
+    const std::string kind = doc.String(s, "roughness");
+    if (kind.empty() || kind == "smooth") continue;
+    if (!rough_effect)
+      doc.Problem(s, "roughness", "a rough surface needs effects.roughness = true",
+                  "roughness = \"smooth\", or set [effects] roughness = true");
+    if (kind == "sinusoidal" && !doc.Given(s, "wavelength_m"))
+      doc.Problem(s, "wavelength_m", "sinusoidal roughness needs a wavelength",
+                  "a positive length [m]");
+    if (kind == "profile" && doc.String(s, "profile_file").empty())
+      doc.Problem(s, "profile_file", "a measured profile needs its file",
+                  "a path to a two-column text file (x [m], height [m])");
+  }
+
+  if (doc.Has("lubricant", "name")) {
+    const std::string name = doc.String("lubricant", "name");
+    if (ResolveLubricantPath(name, path).empty())
+      doc.Problem("lubricant", "name", "no such lubricant file",
+                  "sae40, sae90, reference_z068, or a path to a lubricant .toml file");
+  }
+  if (doc.Int("numerics", "grid_points") % 2 == 0)
+    doc.Problem("numerics", "grid_points", "must be odd, so a node sits at x = 0",
+                "an odd integer >= 17, e.g. 257, 513, 1025");
+  return doc;
+}
+
+}  // namespace tehl::internal

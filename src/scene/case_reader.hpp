@@ -1,0 +1,22 @@
+// Reading a case file: the schema check plus the cross-key rules (one of [gear] or
+// [contact], exactly one speed and one load key, roughness only with its effect, the
+// lubricant file exists). Private to src/: the typed structs are built from the Document by
+// the scene layer.
+#pragma once
+
+#include <string>
+
+#include "base/schema.hpp"
+
+namespace tehl::internal {
+
+// Reads and checks a case file. Problems are collected in the returned Document; callers
+// add their own and then call ThrowIfProblems().
+Document ReadCaseDocument(const std::string& path);
+
+// Resolves a lubricant name from a case ("sae40" or a path) relative to the case file:
+// a path that exists, else lubricants/<name>.toml in the source tree, the installed data
+// folder, or $TEHL_LUBRICANT_DIR. Returns "" when nothing matches.
+std::string ResolveLubricantPath(const std::string& name, const std::string& case_path);
+
+}  // namespace tehl::internal

@@ -1,0 +1,5 @@
+# Scene layer: reads case files, decides which effects run, drives a mesh cycle or a sweep.
+list(APPEND TEHL_SOURCES
+  src/scene/case_schema.cpp
+  src/scene/case_reader.cpp
+)
