@@ -1,0 +1,57 @@
+// A lubricant: its property laws, read from a lubricant file (lubricants/*.toml).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "tehl/lubricant/density_model.hpp"
+#include "tehl/lubricant/thermal_properties.hpp"
+#include "tehl/lubricant/viscosity_model.hpp"
+
+namespace tehl {
+
+// Ree-Eyring shear thinning with an optional limiting shear stress tau_L = tau_L0 + Lambda p
+// (effect non_newtonian). Absent from a lubricant file = the effect cannot be switched on.
+struct EyringParameters {
+  double eyring_stress_pa = 0;          // tau_0 [Pa]
+  double limiting_stress_pa = 0;        // tau_L0 [Pa]; 0 = no limiting shear stress
+  double limiting_stress_slope = 0;     // Lambda = d tau_L / d p [-]
+};
+
+class Lubricant {
+ public:
+  Lubricant(std::string name, std::string source, double reference_temperature_k,
+            double heat_capacity_j_kgk, double expansivity_per_k,
+            std::unique_ptr<ViscosityModel> viscosity, std::unique_ptr<DensityModel> density,
+            std::unique_ptr<ConductivityModel> conductivity,
+            std::optional<EyringParameters> eyring = std::nullopt);
+
+  // Reads a lubricant file; throws InputError listing every problem (file:line: key ...).
+  static Lubricant FromFile(const std::string& path);
+
+  const std::string& name() const { return name_; }
+  const std::string& source() const { return source_; }        // citation of the data
+  double reference_temperature_k() const { return t0_k_; }     // T0 of the laws [K]
+  double heat_capacity_j_kgk() const { return cp_; }           // c_p [J/(kg K)]
+  double expansivity_per_k() const { return beta_; }           // thermal expansivity [1/K]
+  const ViscosityModel& viscosity() const { return *viscosity_; }
+  const DensityModel& density() const { return *density_; }
+  const ConductivityModel& conductivity() const { return *conductivity_; }
+  const std::optional<EyringParameters>& eyring() const { return eyring_; }
+  std::string Describe() const;  // several lines: every law and parameter
+
+  // A copy with another reference (inlet) temperature: the case's inlet_temperature_k.
+  // Laws are rebuilt with T0 moved; eta0 follows the law's temperature dependence.
+  Lubricant WithInletTemperature(double t0_k) const;
+
+ private:
+  std::string name_, source_;
+  double t0_k_, cp_, beta_;
+  std::shared_ptr<const ViscosityModel> viscosity_;
+  std::shared_ptr<const DensityModel> density_;
+  std::shared_ptr<const ConductivityModel> conductivity_;
+  std::optional<EyringParameters> eyring_;
+};
+
+}  // namespace tehl
