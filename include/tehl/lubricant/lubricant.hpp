@@ -41,10 +41,6 @@ class Lubricant {
   const std::optional<EyringParameters>& eyring() const { return eyring_; }
   std::string Describe() const;  // several lines: every law and parameter
 
-  // A copy with another reference (inlet) temperature: the case's inlet_temperature_k.
-  // Laws are rebuilt with T0 moved; eta0 follows the law's temperature dependence.
-  Lubricant WithInletTemperature(double t0_k) const;
-
  private:
   std::string name_, source_;
   double t0_k_, cp_, beta_;
