@@ -1,3 +1,4 @@
 # ehl layer sources (one per line, no globbing).
 list(APPEND TEHL_SOURCES
+  src/ehl/elastic_deflection.cpp
 )
