@@ -30,6 +30,11 @@ struct ToothBlank {
   double youngs_modulus_pa = 0;           // E [Pa]
   double poisson_ratio = 0;               // nu [-]
   bool internal = false;                  // ring gear
+  // Radius where the gear body is held (bore or shaft seat), r_int [m]. Used only by the
+  // fillet-foundation term of "potential_energy" (Sainsot et al. 2004, h_f = r_f / r_int).
+  // 0 = not given: r_int = r_f / 2 is taken (a solid disc on a shaft of half the root
+  // diameter; docs/gear_stiffness.md shows the sensitivity).
+  double bore_radius_m = 0;
 };
 
 // Stiffness of one pair of teeth in contact. Pure and thread-safe.
@@ -51,17 +56,19 @@ std::unique_ptr<PairStiffnessModel> MakePairStiffnessModel(const std::string& me
 
 // ISO 6336-1:2006 method B (VALIDATION.md section 5). Units as in the standard.
 struct IsoStiffness {
-  double c_prime_n_per_mm_um = 0;         // single stiffness c' = c'_th C_M C_R C_B cos(beta)
-                                          // [N/(mm um)]
-  double c_gamma_alpha_n_per_mm_um = 0;   // mesh stiffness c' (0.75 eps_alpha + 0.25) [N/(mm um)]
-  double c_prime_th_n_per_mm_um = 0;      // theoretical single stiffness 1/q' [N/(mm um)]
-  double q_prime_mm_um_per_n = 0;         // minimum flexibility q' [mm um / N]
+  double c_prime_n_per_mm_um = 0;        // single stiffness c' = c'_th C_M C_R C_B cos(beta)
+                                         // [N/(mm um)]
+  double c_gamma_alpha_n_per_mm_um = 0;  // mesh stiffness c' (0.75 eps_alpha + 0.25) [N/(mm um)]
+  double c_prime_th_n_per_mm_um = 0;     // theoretical single stiffness 1/q' [N/(mm um)]
+  double q_prime_mm_um_per_n = 0;        // minimum flexibility q' [mm um / N]
 };
 
-// pinion/wheel: teeth, profile_shift, dedendum_coefficient and drive_pressure_angle_rad are
-// used (the basic rack of the standard: C_B from h_fP/m and alpha_n). eps_alpha: transverse
-// contact ratio [-]; helix_angle_rad: beta [rad] (0 for spur gears). Throws InputError with
-// key "gear.mesh_stiffness" for teeth < 1 or eps_alpha < 1.
+// Formulas and sources in src/gear/iso_stiffness.cpp. Uses of each blank: teeth,
+// profile_shift, dedendum_coefficient and drive_pressure_angle_rad (C_B from the basic rack),
+// youngs_modulus_pa (material factor E/E_st, 1 for steel/steel), internal (an internal wheel
+// has zn2 = infinity). eps_alpha: transverse contact ratio [-]; helix_angle_rad: beta [rad]
+// (0 for spur gears). Throws InputError (key "gear.mesh_stiffness" for range problems) for
+// an invalid blank, eps_alpha < 1, or x1 + x2 outside [-0.5, 2.0] of an external pair.
 IsoStiffness IsoMethodB(const ToothBlank& pinion,
                         const ToothBlank& wheel,
                         double eps_alpha,
