@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   // One line per subcommand; each lives in its own file.
   const std::vector<Command> commands = {
       AddCaseCommand(app),
+      AddLubricantCommand(app),
   };
   try {
     app.parse(argc, argv);

@@ -17,8 +17,7 @@ class DensityModel {
  public:
   virtual ~DensityModel() = default;
   virtual DensityValue Evaluate(double p_pa, double T_k) const = 0;
-  virtual void EvaluateMany(const double* p_pa, const double* T_k, int n,
-                            DensityValue* out) const;
+  virtual void EvaluateMany(const double* p_pa, const double* T_k, int n, DensityValue* out) const;
   virtual double ReferenceDensity() const = 0;  // rho at p = 0, T0 [kg/m^3]
   virtual std::string Describe() const = 0;
 };

@@ -19,7 +19,9 @@ class ViscosityModel {
   virtual ~ViscosityModel() = default;
   virtual ViscosityValue Evaluate(double p_pa, double T_k) const = 0;
   // Batch form for hot loops: one virtual call per array. out[i] = Evaluate(p[i], T[i]).
-  virtual void EvaluateMany(const double* p_pa, const double* T_k, int n,
+  virtual void EvaluateMany(const double* p_pa,
+                            const double* T_k,
+                            int n,
                             ViscosityValue* out) const;
   // eta at p = 0 and the reference temperature T0 [Pa s].
   virtual double ReferenceViscosity() const = 0;

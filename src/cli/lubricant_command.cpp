@@ -1,0 +1,173 @@
+// tehl lubricant NAME [--p start:stop:count] [--T start:stop:count] [--csv FILE]
+// tehl lubricant --print-default
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "base/schema.hpp"
+#include "cli/commands.hpp"
+#include "lubricant/lubricant_schema.hpp"
+#include "scene/case_reader.hpp"
+#include "tehl/error.hpp"
+#include "tehl/lubricant/lubricant.hpp"
+
+namespace tehl::cli {
+namespace {
+
+struct Range {
+  double start = 0, stop = 0;
+  int count = 0;
+  std::vector<double> Values() const {
+    std::vector<double> v;
+    for (int i = 0; i < count; ++i)
+      v.push_back(count == 1 ? start : start + (stop - start) * i / (count - 1));
+    return v;
+  }
+};
+
+bool ParseNumber(const std::string& s, double* x) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  *x = std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size() && std::isfinite(*x);
+}
+
+// "start:stop:count" or a single value; min/max bound every value (in the option's unit).
+Range ParseRange(const std::string& option,
+                 const std::string& text,
+                 double min,
+                 double max,
+                 const std::string& allowed,
+                 ProblemList* problems) {
+  auto bad = [&](const std::string& rule) {
+    problems->Add({"", 0, option, "\"" + text + "\"", rule, allowed});
+    return Range{};
+  };
+  std::vector<std::string> parts;
+  size_t from = 0;
+  for (size_t colon; (colon = text.find(':', from)) != std::string::npos; from = colon + 1)
+    parts.push_back(text.substr(from, colon - from));
+  parts.push_back(text.substr(from));
+  Range r;
+  if (parts.size() == 1) {
+    if (!ParseNumber(parts[0], &r.start)) return bad("not a number");
+    r.stop = r.start;
+    r.count = 1;
+  } else if (parts.size() == 3) {
+    double count = 0;
+    if (!ParseNumber(parts[0], &r.start) || !ParseNumber(parts[1], &r.stop))
+      return bad("start and stop must be finite numbers");
+    if (!ParseNumber(parts[2], &count) || count != std::floor(count) || count < 1 || count > 10000)
+      return bad("count must be an integer from 1 to 10000");
+    r.count = static_cast<int>(count);
+    if (r.count == 1 && r.start != r.stop)
+      return bad("a range of one value needs start = stop (or give one number)");
+  } else {
+    return bad("not a range start:stop:count");
+  }
+  if (r.start < min || r.stop < min || r.start > max || r.stop > max) {
+    std::string rule = "out of range: every value must be in [" + internal::FormatReal(min) + ", " +
+                       internal::FormatReal(max) + "]";
+    if (option == "--T" && std::min(r.start, r.stop) < min)
+      rule += " (did you give degrees Celsius?)";
+    return bad(rule);
+  }
+  return r;
+}
+
+std::string Fixed(const char* fmt, double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, x);
+  return buf;
+}
+
+}  // namespace
+
+Command AddLubricantCommand(CLI::App& app) {
+  struct Args {
+    std::string name, p = "0:1e9:11", T, csv;
+    bool print_default = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* sub = app.add_subcommand(
+      "lubricant", "Print a lubricant's laws and a table of its properties over p and T");
+  sub->add_option("name", args->name,
+                  "Lubricant: sae40, sae90, reference_z068, or a path to a lubricant .toml file");
+  sub->add_option("--p", args->p, "Pressures start:stop:count [Pa] (default 0:1e9:11)");
+  sub->add_option("--T", args->T,
+                  "Temperatures start:stop:count [K] (default T0:T0+80:5, T0 of the lubricant)");
+  sub->add_option("--csv", args->csv, "Also write the table as CSV (SI units) to this file");
+  sub->add_flag("--print-default", args->print_default,
+                "Print every key of a lubricant file with its unit and meaning");
+  return {
+      sub, [args]() {
+        if (args->print_default) {
+          std::cout << internal::LubricantSchema().PrintDefaults();
+          if (args->name.empty()) return kExitOk;
+        }
+        if (args->name.empty())
+          throw InputError(InputProblem{"", 0, "NAME", "", "no lubricant given",
+                                        "sae40, sae90, reference_z068, or a path to a "
+                                        "lubricant .toml file; or --print-default"});
+        const std::string path = internal::ResolveLubricantPath(args->name, "");
+        if (path.empty())
+          throw InputError(InputProblem{"", 0, "NAME", "\"" + args->name + "\"",
+                                        "no such lubricant file",
+                                        "sae40, sae90, reference_z068 (in lubricants/ or "
+                                        "$TEHL_LUBRICANT_DIR), or a path to a .toml file"});
+        const Lubricant lube = Lubricant::FromFile(path);
+        const double t0 = lube.reference_temperature_k();
+        ProblemList problems;
+        const Range p = ParseRange("--p", args->p, 0.0, 1e10,
+                                   "start:stop:count with pressures in [0, 1e10] Pa, "
+                                   "e.g. --p 0:1e9:11",
+                                   &problems);
+        const std::string t_text =
+            args->T.empty() ? Fixed("%.10g", t0) + ":" + Fixed("%.10g", t0 + 80) + ":5" : args->T;
+        const Range T = ParseRange("--T", t_text, 200.0, 1000.0,
+                                   "start:stop:count with absolute temperatures in "
+                                   "[200, 1000] K, e.g. --T 313:393:5",
+                                   &problems);
+        std::ofstream csv;
+        if (!args->csv.empty()) {
+          csv.open(args->csv);
+          if (!csv)
+            problems.Add({"", 0, "--csv", "\"" + args->csv + "\"", "cannot write the file",
+                          "a writable path"});
+        }
+        problems.ThrowIfAny();
+
+        std::cout << lube.Describe() << "  file: " << path << "\n\n";
+        std::printf("%10s %9s %14s %13s %12s %16s\n", "p [MPa]", "T [K]", "eta [Pa s]",
+                    "rho [kg/m^3]", "k [W/(m K)]", "dln(eta)/dp");
+        std::printf("%10s %9s %14s %13s %12s %16s\n", "", "", "", "", "", "[1/GPa]");
+        if (csv) csv << "p_pa,T_k,eta_pa_s,rho_kg_m3,k_w_mk,dln_eta_dp_per_pa\n";
+        for (double t : T.Values()) {
+          for (double pp : p.Values()) {
+            const ViscosityValue eta = lube.viscosity().Evaluate(pp, t);
+            const DensityValue rho = lube.density().Evaluate(pp, t);
+            const ConductivityValue k = lube.conductivity().Evaluate(pp);
+            const double alpha_loc = eta.deta_dp / eta.eta_pa_s;  // [1/Pa]
+            std::printf("%10.2f %9.2f %14.5e %13.3f %12.5f %16.4f\n", pp * 1e-6, t, eta.eta_pa_s,
+                        rho.rho_kg_m3, k.k_w_mk, alpha_loc * 1e9);
+            if (csv)
+              csv << internal::FormatReal(pp) << ',' << internal::FormatReal(t) << ','
+                  << internal::FormatReal(eta.eta_pa_s) << ','
+                  << internal::FormatReal(rho.rho_kg_m3) << ',' << internal::FormatReal(k.k_w_mk)
+                  << ',' << internal::FormatReal(alpha_loc) << '\n';
+          }
+        }
+        std::printf("\nHoupert pressure-viscosity coefficient alpha = %.5g 1/GPa\n",
+                    lube.viscosity().PressureViscosityCoefficient() * 1e9);
+        std::fflush(stdout);
+        return kExitOk;
+      }};
+}
+
+}  // namespace tehl::cli

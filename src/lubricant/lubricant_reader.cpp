@@ -1,0 +1,117 @@
+// Lubricant::FromFile: the schema check, then each law built by the factory with its
+// problems mapped back to the file's lines, all reported at once.
+#include <algorithm>
+#include <optional>
+
+#include "base/schema.hpp"
+#include "lubricant/lubricant_schema.hpp"
+#include "tehl/lubricant/lubricant.hpp"
+#include "tehl/lubricant/model_factory.hpp"
+
+namespace tehl {
+namespace {
+using internal::Document;
+
+// True when the key was written but rejected by the schema (already reported).
+bool Rejected(const Document& doc, const std::string& section, const std::string& key) {
+  const std::string full = section.empty() ? key : section + "." + key;
+  return std::any_of(doc.problems().begin(), doc.problems().end(),
+                     [&](const InputProblem& p) { return p.key == full; });
+}
+
+class LawReader {
+ public:
+  explicit LawReader(Document* doc) : doc_(*doc) {
+    t0_ok_ = doc_.Has("", "reference_temperature_k");
+    t0_ = doc_.Real("", "reference_temperature_k");
+  }
+
+  // The law's parameters as given in `section` (every numeric key but `model_key`), or
+  // nullopt when one of them was rejected by the schema.
+  std::optional<LawParameters> Parameters(const std::string& section) const {
+    LawParameters p;
+    const internal::SectionSpec* spec = internal::LubricantSchema().Find(section);
+    for (const auto& k : spec->keys) {
+      if (k.kind != internal::ValueKind::kDouble) continue;
+      if (Rejected(doc_, section, k.name)) return std::nullopt;
+      if (doc_.Given(section, k.name)) p[k.name] = doc_.Real(section, k.name);
+    }
+    return p;
+  }
+
+  // Runs a factory call; its problems go to the document at the lines of their keys.
+  template <typename Make>
+  auto Build(const std::string& section, Make make) -> decltype(make()) {
+    try {
+      return make();
+    } catch (const InputError& e) {
+      for (const auto& p : e.problems()) {
+        if (p.key == "reference_temperature_k") {
+          if (t0_ok_) doc_.Problem("", p.key, p.rule, p.allowed);
+        } else {
+          doc_.Problem(section, p.key, p.rule, p.allowed);
+        }
+      }
+      return nullptr;
+    }
+  }
+
+  double t0() const { return t0_; }
+
+ private:
+  Document& doc_;
+  bool t0_ok_ = false;
+  double t0_ = 0;
+};
+
+Lubricant Read(Document doc) {
+  for (const auto& p : doc.problems())
+    if (p.key == "(syntax)" || p.key == "(file)") doc.ThrowIfProblems();
+
+  LawReader laws(&doc);
+  std::unique_ptr<ViscosityModel> viscosity;
+  std::unique_ptr<DensityModel> density;
+  std::unique_ptr<ConductivityModel> conductivity;
+  if (doc.Has("viscosity", "model")) {
+    if (const auto p = laws.Parameters("viscosity")) {
+      const ViscosityLaw law = ViscosityLawFromString(doc.String("viscosity", "model"));
+      viscosity = laws.Build("viscosity", [&] { return MakeViscosityModel(law, laws.t0(), *p); });
+    }
+  }
+  if (doc.Has("density", "model")) {
+    if (const auto p = laws.Parameters("density")) {
+      const DensityLaw law = DensityLawFromString(doc.String("density", "model"));
+      density = laws.Build("density", [&] { return MakeDensityModel(law, laws.t0(), *p); });
+    }
+  }
+  if (doc.Has("thermal", "conductivity_model") && doc.Has("thermal", "conductivity_w_mk")) {
+    const ConductivityLaw law =
+        ConductivityLawFromString(doc.String("thermal", "conductivity_model"));
+    const double k0 = doc.Real("thermal", "conductivity_w_mk");
+    conductivity = laws.Build("thermal", [&] { return MakeConductivityModel(law, k0); });
+  }
+  std::optional<EyringParameters> eyring;
+  if (doc.HasSection("eyring"))
+    eyring = EyringParameters{doc.Real("eyring", "eyring_stress_pa"),
+                              doc.Real("eyring", "limiting_stress_pa"),
+                              doc.Real("eyring", "limiting_stress_slope")};
+  doc.ThrowIfProblems();
+
+  const bool dh = doc.String("density", "model") == ToString(DensityLaw::kDowsonHigginson);
+  return Lubricant(doc.String("", "name"), doc.String("", "source"), laws.t0(),
+                   doc.Real("thermal", "heat_capacity_j_kgk"),
+                   dh ? doc.Real("density", "expansivity_per_k") : 0.0, std::move(viscosity),
+                   std::move(density), std::move(conductivity), eyring);
+}
+
+}  // namespace
+
+Lubricant Lubricant::FromFile(const std::string& path) {
+  return Read(Document::ReadFile(internal::LubricantSchema(), path));
+}
+
+Lubricant Lubricant::FromString(const std::string& text, const std::string& name) {
+  return Read(Document::ReadString(internal::LubricantSchema(), text, name));
+}
+
+}  // namespace tehl
