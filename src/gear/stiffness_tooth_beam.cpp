@@ -107,10 +107,13 @@ PotentialEnergyStiffness::ToothCompliance StiffnessToothBeam::Compliance(double 
   const double l = face_width_;
   for (int piece = 0; piece < pieces; ++piece) {
     const double lo = breaks[piece], hi = breaks[piece + 1];
-    const double half = 0.5 * (hi - lo), mid = 0.5 * (hi + lo);
+    // y = lo + (hi - lo) (3 t^2 - 2 t^3), t in [0, 1], clusters the points at both ends:
+    // just above a base circle a flank's half width goes like (y - lo)^(3/2), smooth in t,
+    // and near a thin tip the integrand ~ 1/h^3 grows steeply.
     for (std::size_t q = 0; q < rule_.nodes.size(); ++q) {
-      const double y = mid + half * rule_.nodes[q];
-      const double w = half * rule_.weights[q];
+      const double t = 0.5 * (1.0 + rule_.nodes[q]);
+      const double y = lo + (hi - lo) * t * t * (3.0 - 2.0 * t);
+      const double w = 0.5 * rule_.weights[q] * 6.0 * (hi - lo) * t * (1.0 - t);
       const Section s = SectionAt(y);
       const double area = s.thickness * l;
       const double inertia = s.thickness * s.thickness * s.thickness * l / 12.0;
