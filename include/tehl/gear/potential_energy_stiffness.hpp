@@ -3,7 +3,7 @@
 //
 // Each tooth is a non-uniform cantilever on the gear body, loaded by the contact force F along
 // the line of action of its drive flank (Yang & Lin 1987, ASME J. Mech. Trans. Autom. Des.
-// 109:189-196; Tian 2004, MASc thesis, Univ. of Alberta; Chaari, Fakhfakh & Haddar 2009,
+// 109:189-196; Tian 2004, MSc thesis, Univ. of Alberta; Chaari, Fakhfakh & Haddar 2009,
 // Eur. J. Mech. A/Solids 28:461-468). With y along the tooth axis, a section at y spanning
 // x in [-h_c(y), h_d(y)] (coast and drive flank), t = h_d + h_c, e = (h_d - h_c)/2,
 // A = t L, I = t^3 L / 12, and the contact point (x_P, y_P) on the drive flank:
@@ -31,7 +31,7 @@
 // to where the line of action crosses the tooth axis.
 //
 // Hertzian contact of the pair, linearised (Yang & Sun 1985, ASME J. Mech. Trans. Autom.
-// Des. 107:306-311): k_h = pi E L / (4 (1 - nu^2)) for equal materials. For two materials it
+// Des. 107:529-535): k_h = pi E L / (4 (1 - nu^2)) for equal materials. For two materials it
 // is written with the reduced modulus of VALIDATION.md section 1, 2/E' = (1-nu1^2)/E1 +
 // (1-nu2^2)/E2, as k_h = pi E' L / 4 (identical for equal materials; each body contributes
 // its own half of the compliance 4/(pi E' L)).
