@@ -7,4 +7,14 @@ list(APPEND TEHL_SOURCES
   src/gear/potential_energy_stiffness.cpp
   src/gear/iso_stiffness.cpp
   src/gear/mesh_stiffness.cpp
+  src/gear/involute.cpp
+  src/gear/contact_ratio.cpp
+  src/gear/gear_pair.cpp
+  src/gear/geometry_checks.cpp
+  src/gear/path_of_contact.cpp
+  src/gear/operating_point.cpp
+  src/gear/load_sharing.cpp
+  src/gear/mesh_cycle.cpp
+  src/gear/tooth_profile.cpp
+  src/gear/tooth_blank.cpp
 )

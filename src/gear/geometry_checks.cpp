@@ -1,0 +1,278 @@
+#include "tehl/gear/geometry_checks.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "tehl/error.hpp"
+#include "tehl/gear/contact_ratio.hpp"
+#include "tehl/gear/involute.hpp"
+
+namespace tehl {
+namespace {
+
+// Lengths in messages: millimetres with 4 significant decimals.
+std::string Mm(double metres) {
+  std::ostringstream s;
+  s.precision(4);
+  s << std::fixed << metres * 1e3 << " mm";
+  return s.str();
+}
+
+std::string Num(double x, int decimals = 4) {
+  std::ostringstream s;
+  s.precision(decimals);
+  s << std::fixed << x;
+  return s.str();
+}
+
+class Checker {
+ public:
+  explicit Checker(const GearPair& pair) : pair_(pair), s_(pair.spec()) {}
+
+  std::vector<GeometryProblem> Run() {
+    CenterDistance();
+    BasicRack();
+    for (int i = 0; i < 2; ++i) Member(i);
+    for (Flank f : {Flank::kDrive, Flank::kCoast}) {
+      if (f == Flank::kCoast && Symmetric()) break;
+      Interference(f);
+    }
+    Clearances();
+    ContactRatios();
+    return std::move(out_);
+  }
+
+ private:
+  bool Symmetric() const { return s_.drive_pressure_angle_rad == s_.coast_pressure_angle_rad; }
+  static const char* Section(int i) { return i == 0 ? "gear.pinion" : "gear.wheel"; }
+  static const char* Name(int i) { return i == 0 ? "pinion" : "wheel"; }
+  const GearGeometry& Gear(int i) const { return i == 0 ? pair_.pinion() : pair_.wheel(); }
+  std::string FlankLabel(Flank f) const {
+    return Symmetric() ? "" : " (" + ToString(f) + " flank)";
+  }
+  // The key a user changes to move a tip: the tip radius if given, else the shift.
+  std::string TipKey(int i) const {
+    const GearMemberSpec& m = i == 0 ? s_.pinion : s_.wheel;
+    return m.tip_radius_m > 0 ? "tip_radius_m" : "profile_shift";
+  }
+
+  void Error(std::string section, std::string key, std::string rule, std::string allowed) {
+    out_.push_back(
+        {std::move(section), std::move(key), std::move(rule), std::move(allowed), false});
+  }
+  void Warning(std::string section, std::string key, std::string rule, std::string allowed) {
+    out_.push_back({std::move(section), std::move(key), std::move(rule), std::move(allowed), true});
+  }
+
+  void CenterDistance() {
+    const double a = pair_.center_distance_m();
+    const double a_free = pair_.zero_backlash_center_distance_m();
+    for (Flank f : {Flank::kDrive, Flank::kCoast}) {
+      const double c = pair_.reference_center_distance_m() *
+                       std::cos(pair_.pinion().flank(f).pressure_angle_rad) / a;
+      if (c > 1.0) {
+        Error("gear", "center_distance_m",
+              "a = " + Mm(a) + " is below the " + (s_.internal ? "difference" : "sum") +
+                  " of the base radii" + FlankLabel(f) + ": the involutes cannot mesh",
+              "center_distance_m >= " + Num(a_free, 6) +
+                  " (the zero-backlash distance of the given shifts)");
+        return;
+      }
+    }
+    const double tolerance = 1e-4 * s_.module_m;
+    if (pair_.backlash_m() < -tolerance) {
+      Error("gear", "center_distance_m",
+            "the teeth overlap at a = " + Mm(a) + ": backlash " + Num(pair_.backlash_m() * 1e6, 2) +
+                " um with profile shifts x1 = " + Num(s_.pinion.profile_shift) +
+                ", x2 = " + Num(s_.wheel.profile_shift),
+            "center_distance_m >= " + Num(a_free, 6) +
+                " [m] (zero backlash), or smaller profile shifts");
+    }
+  }
+
+  void BasicRack() {
+    const double tan_sum =
+        std::tan(s_.drive_pressure_angle_rad) + std::tan(s_.coast_pressure_angle_rad);
+    // Rack tooth width at its tip (depth h_fP below the reference line, tooth = space there):
+    const double tip_width = 0.5 * kPi - s_.dedendum_coefficient * tan_sum;  // [m_n]
+    if (tip_width <= 0) {
+      Error("gear", "dedendum_coefficient",
+            "the basic rack tooth is pointed at depth h_fP: its tip width is " + Num(tip_width) +
+                " m_n",
+            "dedendum_coefficient < " + Num(0.5 * kPi / tan_sum) + " for these pressure angles");
+      return;
+    }
+    auto corner = [](double a) { return (1.0 - std::sin(a)) / std::cos(a); };
+    const double rho_max =
+        tip_width / (corner(s_.drive_pressure_angle_rad) + corner(s_.coast_pressure_angle_rad));
+    if (s_.root_fillet_coefficient > rho_max * (1.0 + 1e-12)) {
+      Error("gear", "root_fillet_coefficient",
+            "the rack tip radius rho_fP = " + Num(s_.root_fillet_coefficient) +
+                " m_n does not fit on the rack tooth tip (width " + Num(tip_width) + " m_n)",
+            "root_fillet_coefficient <= " + Num(rho_max) + " for these pressure angles");
+    }
+  }
+
+  void Member(int i) {
+    const GearGeometry& g = Gear(i);
+    const char* sec = Section(i);
+    for (Flank f : {Flank::kDrive, Flank::kCoast}) {
+      if (f == Flank::kCoast && Symmetric()) break;
+      const FlankGeometry& fl = g.flank(f);
+      if (g.tip_radius_m <= fl.base_radius_m) {
+        Error(sec, TipKey(i),
+              std::string("the ") + Name(i) + " tip circle r_a = " + Mm(g.tip_radius_m) +
+                  " lies inside its base circle r_b = " + Mm(fl.base_radius_m) + FlankLabel(f),
+              "a tip radius above the base circle (more teeth or a positive shift)");
+      }
+      if (!g.internal && fl.undercut) {
+        const std::string rule = std::string("the ") + Name(i) + " is undercut" + FlankLabel(f) +
+                                 ": x = " + Num(g.profile_shift) +
+                                 " < x_min = " + Num(fl.min_shift_no_undercut) +
+                                 " for z = " + std::to_string(g.teeth);
+        if (s_.allow_undercut) {
+          Warning(sec, "profile_shift", rule + " (accepted: allow_undercut = true)",
+                  "profile_shift >= " + Num(fl.min_shift_no_undercut));
+        } else {
+          Error(sec, "profile_shift", rule,
+                "profile_shift >= " + Num(fl.min_shift_no_undercut) +
+                    ", more teeth, or [gear] allow_undercut = true");
+        }
+      }
+    }
+    const double land = g.tip_thickness_m;
+    if (land <= 0) {
+      Error(sec, TipKey(i),
+            std::string("the ") + Name(i) + " tooth is pointed: top land " + Mm(land) +
+                " at r_a = " + Mm(g.tip_radius_m) +
+                (g.internal ? std::string()
+                            : "; the flanks meet at r = " + Mm(g.pointed_tip_radius_m)),
+            g.internal ? "a larger ring tip radius (positive profile_shift)"
+                       : "tip_radius_m below " + Mm(g.pointed_tip_radius_m) +
+                             ", or a smaller profile_shift");
+    } else if (land < 0.2 * s_.module_m) {
+      Warning(sec, TipKey(i),
+              std::string("thin top land on the ") + Name(i) + ": " + Mm(land) +
+                  " < 0.2 m_n = " + Mm(0.2 * s_.module_m),
+              "a smaller tip radius or profile shift");
+    }
+  }
+
+  void Interference(Flank f) {
+    const LineOfAction& l = pair_.line(f);
+    const GearGeometry& p = pair_.pinion();
+    const GearGeometry& w = pair_.wheel();
+    if (p.tip_radius_m <= p.flank(f).base_radius_m || w.tip_radius_m <= w.flank(f).base_radius_m)
+      return;  // already reported
+    // Pinion: the wheel's tip circle must cross the line of action at or beyond T1
+    // (seed 000 eq. 3.36: tan(phi_f1) = (1 + u) tan(alpha_w) - u tan(alpha_a2) >= 0).
+    if (l.a_m < 0) {
+      Error("gear.wheel", TipKey(1),
+            "involute interference" + FlankLabel(f) + ": the wheel tip reaches " + Mm(-l.a_m) +
+                " beyond the tangent point T1 of the pinion's base circle",
+            "a wheel tip radius at most " +
+                Mm(s_.internal ? 0 : std::hypot(l.wheel_base_radius_m, l.tangent_length_m)) +
+                ", a positive pinion profile_shift, or more pinion teeth");
+    } else {
+      const double r_sap = std::hypot(l.pinion_base_radius_m, l.a_m);
+      const double r_form = p.flank(f).form_radius_m;
+      if (!p.flank(f).undercut && r_sap < r_form - 1e-9) {
+        Error("gear.wheel", TipKey(1),
+              "involute interference" + FlankLabel(f) +
+                  ": the wheel tip meets the pinion at r = " + Mm(r_sap) +
+                  ", below its involute form circle r_F = " + Mm(r_form) + " (in the root fillet)",
+              "a smaller wheel tip radius or a larger pinion profile_shift");
+      }
+    }
+    if (s_.internal) return;  // the pinion tip meets the ring beyond T2 on the far side
+    // Wheel: the pinion's tip circle must cross the line at or before T2 (eq. 3.37).
+    const double roll2 = l.tangent_length_m - l.e_m;
+    if (roll2 < 0) {
+      Error("gear.pinion", TipKey(0),
+            "involute interference" + FlankLabel(f) + ": the pinion tip reaches " + Mm(-roll2) +
+                " beyond the tangent point T2 of the wheel's base circle",
+            "a pinion tip radius at most " +
+                Mm(std::hypot(l.pinion_base_radius_m, l.tangent_length_m)) +
+                ", a positive wheel profile_shift, or more wheel teeth");
+    } else {
+      const double r_sap = std::hypot(l.wheel_base_radius_m, roll2);
+      const double r_form = w.flank(f).form_radius_m;
+      if (!w.flank(f).undercut && r_sap < r_form - 1e-9) {
+        Error("gear.pinion", TipKey(0),
+              "involute interference" + FlankLabel(f) +
+                  ": the pinion tip meets the wheel at r = " + Mm(r_sap) +
+                  ", below its involute form circle r_F = " + Mm(r_form) + " (in the root fillet)",
+              "a smaller pinion tip radius or a larger wheel profile_shift");
+      }
+    }
+  }
+
+  void Clearances() {
+    for (int i = 0; i < 2; ++i) {
+      const double c = i == 0 ? pair_.pinion_tip_clearance_m() : pair_.wheel_tip_clearance_m();
+      if (c < 0) {
+        Error(Section(i), TipKey(i),
+              std::string("the ") + Name(i) + " tip reaches " + Mm(-c) + " into the " +
+                  Name(1 - i) + "'s root circle",
+              "a tip radius smaller by at least " + Mm(-c) +
+                  " (tip shortening), or a larger "
+                  "center_distance_m");
+      }
+    }
+  }
+
+  void ContactRatios() {
+    for (Flank f : {Flank::kDrive, Flank::kCoast}) {
+      if (f == Flank::kCoast && Symmetric()) break;
+      const double eps = pair_.line(f).contact_ratio;
+      const std::string key =
+          f == Flank::kDrive ? "pressure_angle_deg" : "coast_pressure_angle_deg";
+      const ContactRatioAssessment r = AssessContactRatio(eps);
+      const std::string what =
+          "transverse contact ratio" + FlankLabel(f) + " eps_alpha = " + Num(eps);
+      const std::string raise =
+          "eps_alpha >= 1.2 (seed 003 section 4.1): more teeth, larger tip radii "
+          "(addendum_coefficient) or a smaller pressure angle";
+      if (!r.continuous) {
+        if (f == Flank::kDrive)
+          Error("gear", key, what + " < 1: the mesh is not continuous", raise);
+        else
+          Warning("gear", key, what + " < 1: the coast flank cannot carry a reversed drive", raise);
+      } else if (r.below_minimum) {
+        Warning("gear", key, what + " < 1.2, the usual industrial minimum", raise);
+      } else if (r.near_integer) {
+        Warning("gear", key, what + " is close to an integer: mesh impacts synchronise",
+                "a contact ratio away from integers (seed 003 section 4.1)");
+      }
+    }
+  }
+
+  const GearPair& pair_;
+  const GearPairSpec& s_;
+  std::vector<GeometryProblem> out_;
+};
+
+}  // namespace
+
+std::string GeometryProblem::ToString() const {
+  std::string s = section + "." + key + ": " + rule;
+  if (!allowed.empty()) s += " (allowed: " + allowed + ")";
+  return s;
+}
+
+std::vector<GeometryProblem> CheckGeometry(const GearPair& pair) { return Checker(pair).Run(); }
+
+std::vector<GeometryProblem> RequireValidGeometry(const GearPair& pair) {
+  ProblemList errors;
+  std::vector<GeometryProblem> warnings;
+  for (auto& p : CheckGeometry(pair)) {
+    if (p.warning)
+      warnings.push_back(std::move(p));
+    else
+      errors.Add({"", 0, p.section + "." + p.key, "", p.rule, p.allowed});
+  }
+  errors.ThrowIfAny();
+  return warnings;
+}
+
+}  // namespace tehl
