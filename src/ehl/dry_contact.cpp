@@ -37,10 +37,14 @@ int CheckedGridSize(int n, double x0_m) {
 
 std::string ToString(DryContactSolver::Termination t) {
   switch (t) {
-    case DryContactSolver::Termination::kConverged: return "converged";
-    case DryContactSolver::Termination::kMaxIterations: return "max_iterations";
-    case DryContactSolver::Termination::kContactAtGridEdge: return "contact_at_grid_edge";
-    case DryContactSolver::Termination::kNotSolved: return "not_solved";
+    case DryContactSolver::Termination::kConverged:
+      return "converged";
+    case DryContactSolver::Termination::kMaxIterations:
+      return "max_iterations";
+    case DryContactSolver::Termination::kContactAtGridEdge:
+      return "contact_at_grid_edge";
+    case DryContactSolver::Termination::kNotSolved:
+      return "not_solved";
   }
   return "unknown";
 }
@@ -60,15 +64,15 @@ std::vector<std::string> DryContactSolver::Options::Validate() const {
 
 std::string DryContactSolver::Summary::BriefReport() const {
   std::ostringstream s;
-  s << "dry contact: " << ToString(termination) << " after " << iterations
-    << " iterations, change " << Num(relative_change) << ", load error "
-    << Num(load_balance_error) << ", p_max " << Num(max_pressure_pa) << " Pa, half-width "
-    << Num(contact_half_width_m) << " m";
+  s << "dry contact: " << ToString(termination) << " after " << iterations << " iterations, change "
+    << Num(relative_change) << ", load error " << Num(load_balance_error) << ", p_max "
+    << Num(max_pressure_pa) << " Pa, half-width " << Num(contact_half_width_m) << " m";
   return s.str();
 }
 
-DryContactSolver::DryContactSolver(int n, double x0_m, double dx_m, double e_prime_pa)
-    : x0_m_(x0_m), deflection_(CheckedGridSize(n, x0_m), dx_m, e_prime_pa) {}
+DryContactSolver::DryContactSolver(
+    int n, double x0_m, double dx_m, double e_prime_pa, FftPlanEffort effort)
+    : x0_m_(x0_m), deflection_(CheckedGridSize(n, x0_m), dx_m, e_prime_pa, effort) {}
 
 DryContactSolver::Summary DryContactSolver::Solve(const Options& options,
                                                   const DryContactProblem& problem,
@@ -228,15 +232,19 @@ DryContactSolver::Summary DryContactSolver::Solve(const Options& options,
     summary.termination = Termination::kContactAtGridEdge;
   }
   switch (summary.termination) {
-    case Termination::kConverged: summary.message = "Converged."; break;
+    case Termination::kConverged:
+      summary.message = "Converged.";
+      break;
     case Termination::kMaxIterations:
-      summary.message = "No convergence in max_iterations = " +
-                        std::to_string(options.max_iterations) + " iterations.";
+      summary.message =
+          "No convergence in max_iterations = " + std::to_string(options.max_iterations) +
+          " iterations.";
       break;
     case Termination::kContactAtGridEdge:
       summary.message = "The contact reaches the end of the grid: widen the grid.";
       break;
-    case Termination::kNotSolved: break;
+    case Termination::kNotSolved:
+      break;
   }
   summary.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

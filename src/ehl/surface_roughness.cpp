@@ -45,12 +45,12 @@ void CheckPoints(const std::vector<double>& x,
   }
   for (size_t k = 0; k < x.size(); ++k) {
     if (!std::isfinite(x[k])) {
-      problems->Add({source, 0, "x", Num(x[k]), "must be a finite number [m]",
-                     "a position in metres"});
+      problems->Add(
+          {source, 0, "x", Num(x[k]), "must be a finite number [m]", "a position in metres"});
     }
     if (!std::isfinite(z[k])) {
-      problems->Add({source, 0, "height", Num(z[k]), "must be a finite number [m]",
-                     "a height in metres"});
+      problems->Add(
+          {source, 0, "height", Num(z[k]), "must be a finite number [m]", "a height in metres"});
     }
     if (k > 0 && !(x[k] > x[k - 1])) {
       problems->Add({source, 0, "x", Num(x[k]),
@@ -66,11 +66,8 @@ void CheckPoints(const std::vector<double>& x,
 
 }  // namespace
 
-void SampleHeights(const SurfaceShape& shape,
-                   const double* x_m,
-                   int n,
-                   double travel_m,
-                   double* out_m) {
+void SampleHeights(
+    const SurfaceShape& shape, const double* x_m, int n, double travel_m, double* out_m) {
   for (int i = 0; i < n; ++i) out_m[i] = shape.Height(x_m[i], travel_m);
 }
 
@@ -80,12 +77,12 @@ SinusoidalWaviness::SinusoidalWaviness(double amplitude_m, double wavelength_m, 
     : amplitude_m_(amplitude_m), wavelength_m_(wavelength_m), phase_rad_(phase_rad) {
   ProblemList problems;
   if (!std::isfinite(amplitude_m)) {
-    problems.Add({"", 0, "SinusoidalWaviness::amplitude_m", Num(amplitude_m),
-                  "must be finite [m]", "an amplitude in metres"});
+    problems.Add({"", 0, "SinusoidalWaviness::amplitude_m", Num(amplitude_m), "must be finite [m]",
+                  "an amplitude in metres"});
   }
   if (!(wavelength_m > 0) || !std::isfinite(wavelength_m)) {
-    problems.Add({"", 0, "SinusoidalWaviness::wavelength_m", Num(wavelength_m),
-                  "must be > 0 [m]", "a positive wavelength in metres"});
+    problems.Add({"", 0, "SinusoidalWaviness::wavelength_m", Num(wavelength_m), "must be > 0 [m]",
+                  "a positive wavelength in metres"});
   }
   if (!std::isfinite(phase_rad)) {
     problems.Add({"", 0, "SinusoidalWaviness::phase_rad", Num(phase_rad), "must be finite [rad]",
@@ -99,8 +96,8 @@ double SinusoidalWaviness::Height(double x_m, double travel_m) const {
 }
 
 std::string SinusoidalWaviness::Describe() const {
-  return "sinusoidal waviness A = " + Num(amplitude_m_) + " m, wavelength = " +
-         Num(wavelength_m_) + " m, phase = " + Num(phase_rad_) + " rad";
+  return "sinusoidal waviness A = " + Num(amplitude_m_) + " m, wavelength = " + Num(wavelength_m_) +
+         " m, phase = " + Num(phase_rad_) + " rad";
 }
 
 MeasuredProfile MeasuredProfile::ReadFile(const std::string& path) {
@@ -173,7 +170,8 @@ MeasuredProfile::MeasuredProfile(std::vector<double> x_m,
   // Exact integral of the periodic piecewise-linear surface over one period (trapezoids,
   // including the closing segment from z_{m-1} to z_0).
   double integral = 0.5 * closing * (z_m_.back() + z_m_.front());
-  for (size_t k = 1; k < m; ++k) integral += 0.5 * (x_m_[k] - x_m_[k - 1]) * (z_m_[k] + z_m_[k - 1]);
+  for (size_t k = 1; k < m; ++k)
+    integral += 0.5 * (x_m_[k] - x_m_[k - 1]) * (z_m_[k] + z_m_[k - 1]);
   removed_mean_m_ = integral / period_m_;
   for (double& z : z_m_) z -= removed_mean_m_;
 }
@@ -192,7 +190,10 @@ double MeasuredProfile::Height(double x_m, double travel_m) const {
   size_t lo = 0, hi = x_m_.size() - 1;
   while (hi - lo > 1) {
     const size_t mid = (lo + hi) / 2;
-    if (x_m_[mid] <= xs) lo = mid; else hi = mid;
+    if (x_m_[mid] <= xs)
+      lo = mid;
+    else
+      hi = mid;
   }
   const double t = (xs - x_m_[lo]) / (x_m_[hi] - x_m_[lo]);
   return z_m_[lo] + t * (z_m_[hi] - z_m_[lo]);
@@ -208,9 +209,9 @@ double MeasuredProfile::rms_m() const {
 }
 
 std::string MeasuredProfile::Describe() const {
-  return "measured profile '" + source_ + "' (" + std::to_string(x_m_.size()) +
-         " points, period " + Num(period_m_) + " m, mean removed " + Num(removed_mean_m_) +
-         " m, rms " + Num(rms_m()) + " m)";
+  return "measured profile '" + source_ + "' (" + std::to_string(x_m_.size()) + " points, period " +
+         Num(period_m_) + " m, mean removed " + Num(removed_mean_m_) + " m, rms " + Num(rms_m()) +
+         " m)";
 }
 
 }  // namespace tehl

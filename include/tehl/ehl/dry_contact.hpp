@@ -31,10 +31,10 @@ struct DryContactProblem {
 };
 
 struct DryContactSolution {
-  std::vector<double> pressure_pa;    // p_i [Pa]
-  std::vector<double> gap_m;          // g_i = h0 + x_i^2/(2R) + v_i - s_i, >= 0 [m]
-  std::vector<double> deflection_m;   // v_i = (K p)_i [m]
-  double approach_m = 0;              // h0 (its additive constant follows K's, see v) [m]
+  std::vector<double> pressure_pa;   // p_i [Pa]
+  std::vector<double> gap_m;         // g_i = h0 + x_i^2/(2R) + v_i - s_i, >= 0 [m]
+  std::vector<double> deflection_m;  // v_i = (K p)_i [m]
+  double approach_m = 0;             // h0 (its additive constant follows K's, see v) [m]
 };
 
 class DryContactSolver {
@@ -48,32 +48,37 @@ class DryContactSolver {
   };
 
   enum class Termination {
-    kConverged,            // tolerance met
-    kMaxIterations,        // max_iterations reached first
-    kContactAtGridEdge,    // converged, but the contact reaches the first or last grid point:
-                           // the grid is too short and the pressure is truncated
-    kNotSolved,            // Solve() was not called or failed
+    kConverged,          // tolerance met
+    kMaxIterations,      // max_iterations reached first
+    kContactAtGridEdge,  // converged, but the contact reaches the first or last grid point:
+                         // the grid is too short and the pressure is truncated
+    kNotSolved,          // Solve() was not called or failed
   };
 
   struct Summary {
     Termination termination = Termination::kNotSolved;
     std::string message = "Solve() was not called.";
     int iterations = -1;
-    double relative_change = -1;        // dx sum|p_k - p_{k-1}| / w of the last iteration [-]
-    double load_balance_error = -1;     // |dx sum p - w| / w [-]
-    double complementarity = -1;        // max_i p_i g_i / (p_max * max|g|), 0 when exact [-]
-    double max_pressure_pa = -1;        // [Pa]
-    double contact_begin_m = 0;         // left edge of the first loaded cell (x - dx/2) [m]
-    double contact_end_m = 0;           // right edge of the last loaded cell (x + dx/2) [m]
-    double contact_half_width_m = -1;   // (contact_end - contact_begin) / 2 [m]
-    double wall_time_s = -1;            // [s]
+    double relative_change = -1;       // dx sum|p_k - p_{k-1}| / w of the last iteration [-]
+    double load_balance_error = -1;    // |dx sum p - w| / w [-]
+    double complementarity = -1;       // max_i p_i g_i / (p_max * max|g|), 0 when exact [-]
+    double max_pressure_pa = -1;       // [Pa]
+    double contact_begin_m = 0;        // left edge of the first loaded cell (x - dx/2) [m]
+    double contact_end_m = 0;          // right edge of the last loaded cell (x + dx/2) [m]
+    double contact_half_width_m = -1;  // (contact_end - contact_begin) / 2 [m]
+    double wall_time_s = -1;           // [s]
     bool usable() const { return termination == Termination::kConverged; }
     std::string BriefReport() const;
   };
 
   // The grid: n points from x0_m with spacing dx_m; E' the reduced modulus [Pa].
-  // Throws InputError for n < 3, dx_m <= 0 or e_prime_pa <= 0.
-  DryContactSolver(int n, double x0_m, double dx_m, double e_prime_pa);
+  // Throws InputError for n < 3, dx_m <= 0 or e_prime_pa <= 0. A solve takes a few hundred
+  // deflection evaluations, too few to repay FFTW_MEASURE planning: kEstimate by default.
+  DryContactSolver(int n,
+                   double x0_m,
+                   double dx_m,
+                   double e_prime_pa,
+                   FftPlanEffort effort = FftPlanEffort::kEstimate);
 
   int size() const { return deflection_.size(); }
   double x0_m() const { return x0_m_; }

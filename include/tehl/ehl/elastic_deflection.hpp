@@ -18,17 +18,21 @@
 // in the rigid approach h0, so only differences of v carry physics.
 #pragma once
 
-#include <memory>
-
 #include <Eigen/Core>
+#include <memory>
 
 namespace tehl {
 
-// How much effort FFTW spends choosing its algorithm when the plans are built.
-//  - kMeasure: times several algorithms once per size (tens of ms for n ~ 1e4 the first time a
-//    size is seen in a process; later plans of that size reuse the accumulated wisdom). Best
-//    for a solver that calls Apply() thousands of times (see bench/elastic_bench.cpp).
-//  - kEstimate: heuristic plan, no timing; for one-off evaluations.
+// How much effort FFTW spends choosing its algorithm when the plans are built. Measured with
+// bench/elastic_bench.cpp (FFTW 3.3, 2-core x86-64, CPU time):
+//  - kMeasure (default): Apply() is 10-40% faster than with kEstimate (n = 2049: 18 vs 26 us;
+//    n = 16385: 182 vs 254 us), but the FIRST plan of a size in a process costs 0.1 s
+//    (n = 513) to several seconds (n = 16385). Later objects of that size reuse FFTW's
+//    in-process wisdom and are built in 0.05-2 ms. Best for a solver that evaluates the
+//    deflection 1e5+ times on one grid (Newton-Krylov over a mesh cycle).
+//  - kEstimate: heuristic plan, built in 0.1-2 ms; deterministic (kMeasure picks algorithms by
+//    timing, so the last bits of v may differ between runs). Best for one-off evaluations,
+//    tests and the dry-contact solver.
 enum class FftPlanEffort { kMeasure, kEstimate };
 
 class ElasticDeflection {
@@ -37,7 +41,9 @@ class ElasticDeflection {
   // Throws InputError for values outside those ranges. Builds K, its transform and the FFTW
   // plans (plan creation is serialized by a process-wide mutex, so objects may be built and
   // destroyed on different threads concurrently).
-  ElasticDeflection(int n, double dx_m, double e_prime_pa,
+  ElasticDeflection(int n,
+                    double dx_m,
+                    double e_prime_pa,
                     FftPlanEffort effort = FftPlanEffort::kMeasure);
   ~ElasticDeflection();
   ElasticDeflection(ElasticDeflection&&) noexcept;
@@ -49,7 +55,7 @@ class ElasticDeflection {
   int size() const;           // n [-]
   double dx_m() const;        // grid spacing [m]
   double e_prime_pa() const;  // reduced modulus E' [Pa]
-  // Padded FFT length used by Apply() (>= 2n - 1, a product of 2, 3, 5, 7) [-].
+  // Padded FFT length used by Apply() (>= 2n - 1; even, 2^a 3^b 5^c 7^{0 or 1}) [-].
   int fft_size() const;
 
   // K_k for k = 0..n-1 [m/Pa]: deflection at x_i per unit pressure on cell i +- k.

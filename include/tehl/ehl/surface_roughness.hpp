@@ -34,11 +34,8 @@ class SurfaceShape {
 };
 
 // out[i] = shape.Height(x_m[i], travel_m), i = 0..n-1 [m].
-void SampleHeights(const SurfaceShape& shape,
-                   const double* x_m,
-                   int n,
-                   double travel_m,
-                   double* out_m);
+void SampleHeights(
+    const SurfaceShape& shape, const double* x_m, int n, double travel_m, double* out_m);
 
 // A smooth surface: height 0 everywhere.
 class SmoothSurface final : public SurfaceShape {
@@ -99,8 +96,8 @@ class MeasuredProfile final : public SurfaceShape {
   double rms_m() const;  // root mean square of the periodic profile (after mean removal) [m]
 
  private:
-  std::vector<double> x_m_;       // as given [m]
-  std::vector<double> z_m_;       // heights with the mean removed [m]
+  std::vector<double> x_m_;  // as given [m]
+  std::vector<double> z_m_;  // heights with the mean removed [m]
   std::string source_;
   double period_m_ = 0;
   double removed_mean_m_ = 0;

@@ -33,8 +33,8 @@ double HertzPressure(const HertzScales& hz, double x) {
 // within 1% of b, load balance to 1e-6. Grids: 2049 points on [-1.5b, 1.5b] (dx = b/683) for
 // R = 10 mm, w = 300 kN/m; 2049 points on [-2b, 1.2b] (not symmetric) for R = 25 mm, w = 1 MN/m.
 TEST(DryContactVerification, SmoothCylindersGiveHertzPressureAndHalfWidth) {
-  for (const HertzCase& c : {HertzCase{0.01, 3e5, -1.5, 1.5, 2049},
-                             HertzCase{0.025, 1e6, -2.0, 1.2, 2049}}) {
+  for (const HertzCase& c :
+       {HertzCase{0.01, 3e5, -1.5, 1.5, 2049}, HertzCase{0.025, 1e6, -2.0, 1.2, 2049}}) {
     const HertzScales hz = LineContactHertz(c.w_n_per_m, c.r_m, kEPrime);
     const double b = hz.half_width_m;
     const double dx = (c.right - c.left) * b / (c.n - 1);
@@ -92,10 +92,11 @@ TEST(DryContactVerification, ShortWavinessAddsTheWestergaardRipple) {
   // A surface z = D sin(k x + phi) pressed flat needs the pressure ripple p* sin(k x + phi) with
   // p* = pi E* D / lambda = pi E' D / (2 lambda) (Westergaard, J. Appl. Mech. 6 (1939) A49;
   // derivation: int cos(k x') ln|x - x'| dx' = -pi cos(k x)/k, so the kernel of
-  // elastic_deflection.hpp maps p* cos(kx) to v = 4 p* cos(kx)/(E' k), and v must cancel D). Elasticity is linear, so with lambda = b/8 and p* = 0.1 p_H (full contact in
-  // the centre) the pressure over |x| < b/2 is Hertz + ripple; the superposition is not exact
-  // because the ripple shifts the contact edges, hence 1% of p*. Also checks the sign: a
-  // positive height (into the gap) raises the pressure.
+  // elastic_deflection.hpp maps p* cos(kx) to v = 4 p* cos(kx)/(E' k), and v must cancel D).
+  // Elasticity is linear, so with lambda = b/8 and p* = 0.1 p_H (full contact in the centre) the
+  // pressure over |x| < b/2 is Hertz + ripple; the superposition is not exact because the ripple
+  // shifts the contact edges, hence 1% of p*. Also checks the sign: a positive height (into the
+  // gap) raises the pressure.
   const double r = 0.01, w = 3e5, travel = 1.1e-5, phase = 0.3;
   const HertzScales hz = LineContactHertz(w, r, kEPrime);
   const double b = hz.half_width_m, lambda = b / 8, p_star = 0.1 * hz.max_pressure_pa;

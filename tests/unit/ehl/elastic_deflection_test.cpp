@@ -77,7 +77,8 @@ double QuadratureLogIntegral(double c, double h) {
   };
   if (c != 0) return gauss(c, h);
   double sum = 0;  // 2 int_0^h ln s ds on pieces [h 2^-(j+1), h 2^-j]
-  for (int j = 0; j < 80; ++j) sum += 2 * gauss(0.75 * h * std::ldexp(1.0, -j), 0.25 * h * std::ldexp(1.0, -j));
+  for (int j = 0; j < 80; ++j)
+    sum += 2 * gauss(0.75 * h * std::ldexp(1.0, -j), 0.25 * h * std::ldexp(1.0, -j));
   return sum;  // the rest, 2 int_0^{h 2^-80} ln s ds, is below 1e-22 h
 }
 

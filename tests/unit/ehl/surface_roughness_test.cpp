@@ -2,14 +2,13 @@
 #include "tehl/ehl/surface_roughness.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include "tehl/error.hpp"
 #include "tehl/units.hpp"
