@@ -13,7 +13,7 @@ Schema BuildLubricantSchema() {
   s.sections = {
       {"",
        "the oil and where its data come from",
-       false,
+       true,
        {
            Required(Text("name", "", "display name, e.g. \"SAE 40 mineral oil\""),
                     "\"SAE 40 mineral oil\""),

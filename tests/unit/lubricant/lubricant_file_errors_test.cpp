@@ -1,6 +1,7 @@
 // Malformed lubricant files: each problem reported at once, with file:line, key and value
 // (STYLE.md section 5).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -165,7 +166,8 @@ TEST(LubricantFile, SyntaxErrorGivesItsLine) {
 }
 
 TEST(LubricantFile, BinaryAndMissingFilesAreInputErrors) {
-  const std::string path = ::testing::TempDir() + "/lubricant_binary.toml";
+  const std::string path =
+      ::testing::TempDir() + "/tehl_" + std::to_string(getpid()) + "_lubricant_binary.toml";
   {
     std::ofstream out(path, std::ios::binary);
     out << "name = \"oil\"\n" << std::string("\x00\x01\xff\xfe", 4);

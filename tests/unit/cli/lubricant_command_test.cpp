@@ -1,0 +1,84 @@
+// tehl lubricant: the property table, the CSV and the rejection of bad ranges (exit 2).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "unit/cli/run_tehl.hpp"
+
+namespace tehl {
+namespace {
+using testing::RunTehl;
+
+std::vector<std::vector<double>> CsvRows(const std::string& text, std::string* header) {
+  std::istringstream in(text);
+  std::getline(in, *header);
+  std::vector<std::vector<double>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<double> row;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(LubricantCommand, WritesTheTableAsCsvInSiUnits) {
+  const std::string csv = testing::UniqueTempPath("sae40_table.csv");
+  const testing::RunResult r =
+      RunTehl("lubricant sae40 --p 0:1e9:3 --T 313.15:333.15:2 --csv '" + csv + "'");
+  ASSERT_TRUE(r.exited);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("SAE 40"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("roelands_gamma"), std::string::npos) << r.out;
+  std::string header;
+  const auto rows = CsvRows(testing::ReadAll(csv), &header);
+  std::remove(csv.c_str());
+  EXPECT_EQ(header, "p_pa,T_k,eta_pa_s,rho_kg_m3,k_w_mk,dln_eta_dp_per_pa");
+  ASSERT_EQ(rows.size(), 6u);  // 2 temperatures x 3 pressures
+  // Row 0: p = 0, T = T0 -> the Table 2 inlet values of seed 004 (VALIDATION.md section 5).
+  EXPECT_EQ(rows[0][0], 0.0);
+  EXPECT_EQ(rows[0][1], 313.15);
+  EXPECT_DOUBLE_EQ(rows[0][2], 0.1140574);
+  EXPECT_DOUBLE_EQ(rows[0][3], 879.625);
+  EXPECT_DOUBLE_EQ(rows[0][4], 0.125);
+  // Row 1: p = 0.5 GPa. Row 3: p = 0, T = 333.15 K: eta0 exp(-0.046 * 20) (gamma form).
+  EXPECT_EQ(rows[1][0], 5e8);
+  EXPECT_NEAR(rows[3][2] / 0.1140574, 0.39851904, 1e-8);
+}
+
+TEST(LubricantCommand, BadRangesExitWithCodeTwoAndNameTheOption) {
+  const struct {
+    const char* args;
+    const char* expect;
+  } cases[] = {
+      {"lubricant sae40 --p 0:1e9", "--p = \"0:1e9\""},
+      {"lubricant sae40 --p -1e6:1e9:3", "--p = \"-1e6:1e9:3\""},
+      {"lubricant sae40 --p 0:1e9:2.5", "count must be an integer"},
+      {"lubricant sae40 --p 0:1e9:0", "count must be an integer"},
+      {"lubricant sae40 --p a:b:c", "--p = \"a:b:c\""},
+      {"lubricant sae40 --T 40:80:3", "did you give degrees Celsius?"},
+      {"lubricant sae40 --T 313:393:1", "start = stop"},
+      {"lubricant no_such_oil", "no such lubricant file"},
+      {"lubricant", "no lubricant given"},
+  };
+  for (const auto& c : cases) {
+    const testing::RunResult r = RunTehl(c.args);
+    ASSERT_TRUE(r.exited) << c.args;
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.expect), std::string::npos) << c.args << "\n" << r.err;
+  }
+}
+
+TEST(LubricantCommand, PrintDefaultListsEveryLubricantSection) {
+  const testing::RunResult r = RunTehl("lubricant --print-default");
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  for (const char* s : {"[density]", "[viscosity]", "[thermal]", "[eyring]", "source"})
+    EXPECT_NE(r.out.find(s), std::string::npos) << s;
+}
+
+}  // namespace
+}  // namespace tehl

@@ -1,0 +1,57 @@
+// Runs the real `tehl` program (TEHL_BINARY) and captures its exit status and output.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace tehl::testing {
+
+struct RunResult {
+  bool exited = false;   // false: killed by a signal (a crash)
+  int exit_code = -1;    // valid when exited
+  int signal = 0;        // valid when !exited
+  std::string out, err;  // stdout and stderr
+};
+
+inline std::string ReadAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A path in the test temporary folder that no other process uses (ctest -j, other builds).
+inline std::string UniqueTempPath(const std::string& name) {
+  static int counter = 0;
+  return ::testing::TempDir() + "/tehl_" + std::to_string(getpid()) + "_" +
+         std::to_string(counter++) + "_" + name;
+}
+
+// `args` is appended to the program path as shell words; paths must not contain quotes.
+inline RunResult RunTehl(const std::string& args) {
+  const std::string out = UniqueTempPath("stdout.txt"), err = UniqueTempPath("stderr.txt");
+  const std::string cmd =
+      std::string("'") + TEHL_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "'";
+  const int status = std::system(cmd.c_str());
+  RunResult r;
+  if (status != -1 && WIFEXITED(status)) {
+    r.exited = true;
+    r.exit_code = WEXITSTATUS(status);
+  } else if (status != -1 && WIFSIGNALED(status)) {
+    r.signal = WTERMSIG(status);
+  }
+  r.out = ReadAll(out);
+  r.err = ReadAll(err);
+  std::remove(out.c_str());
+  std::remove(err.c_str());
+  return r;
+}
+
+}  // namespace tehl::testing
