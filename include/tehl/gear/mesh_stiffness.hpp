@@ -57,7 +57,7 @@ std::unique_ptr<PairStiffnessModel> MakePairStiffnessModel(const std::string& me
 // ISO 6336-1:2006 method B (VALIDATION.md section 5). Units as in the standard.
 struct IsoStiffness {
   double c_prime_n_per_mm_um = 0;        // single stiffness c' = c'_th C_M C_R C_B cos(beta)
-                                         // [N/(mm um)]
+                                         // (E/E_st) [N/(mm um)]
   double c_gamma_alpha_n_per_mm_um = 0;  // mesh stiffness c' (0.75 eps_alpha + 0.25) [N/(mm um)]
   double c_prime_th_n_per_mm_um = 0;     // theoretical single stiffness 1/q' [N/(mm um)]
   double q_prime_mm_um_per_n = 0;        // minimum flexibility q' [mm um / N]
