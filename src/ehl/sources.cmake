@@ -1,5 +1,12 @@
 # ehl layer sources (one per line, no globbing).
 list(APPEND TEHL_SOURCES
+  src/ehl/grid.cpp
+  src/ehl/film_thickness_formulas.cpp
+  src/ehl/reynolds_system.cpp
+  src/ehl/newton_system.cpp
+  src/ehl/gmres.cpp
+  src/ehl/newton_krylov_solver.cpp
+  src/ehl/line_contact_solver.cpp
   src/ehl/elastic_deflection.cpp
   src/ehl/surface_roughness.cpp
   src/ehl/dry_contact.cpp

@@ -1,0 +1,18 @@
+// Which physics a film solve includes (DESIGN.md section 5: effects are data). An effect that
+// is off is not assembled and allocates nothing.
+#pragma once
+
+#include <string>
+
+namespace tehl {
+
+struct FilmEffects {
+  bool elastic = true;       // elastic deflection v(x) of the surfaces (DC-FFT); false = rigid
+  bool piezoviscous = true;  // eta(p); false = eta(0, T)
+  bool compressible = true;  // rho(p); false = rho(0, T)
+  bool transient = true;     // squeeze term d(rho h)/dt in time steps; false = quasi-steady
+  bool roughness = false;    // surface shapes move with their surfaces (needs surface shapes)
+  std::string ToString() const;  // e.g. "elastic piezoviscous compressible transient"
+};
+
+}  // namespace tehl

@@ -1,0 +1,146 @@
+// Isothermal elastohydrodynamic line contact: transient compressible Reynolds equation,
+// DC-FFT elastic deflection, Dowson-Higginson density and the lubricant's viscosity law,
+// solved by Newton-Raphson on (p, h0) with the load balance (DESIGN.md sections 4-5, seed 004
+// eqs. 2-8; docs/theory.md gives the discretization).
+//
+// Unknowns: pressure p_i at the interior nodes of a UniformGrid and the rigid approach h0.
+//   Reynolds   d/dx(rho h^3/(12 eta) dp/dx) - um d(rho h)/dx - d(rho h)/dt = 0   where p > 0,
+//   cavitation p >= 0 with the residual >= 0 where p = 0 (a complementarity, solved by a
+//              semismooth Newton method on min(p, r): the Reynolds exit condition emerges),
+//   film       h = h0 + x^2/(2R) + v(x) - height1(x, t) - height2(x, t),
+//   load       integral p dx = w.
+// Gear-free: R, u1, u2, w and the surface shapes are plain inputs at each instant.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "tehl/ehl/film_effects.hpp"
+#include "tehl/ehl/grid.hpp"
+
+namespace tehl {
+
+class Lubricant;
+class SurfaceShape;
+
+enum class LinearSolverKind { kAuto, kDense, kNewtonKrylov };
+std::string ToString(LinearSolverKind k);
+LinearSolverKind LinearSolverKindFromString(const std::string& s);  // throws InputError
+
+enum class TimeScheme { kBdf1, kBdf2 };
+std::string ToString(TimeScheme s);
+TimeScheme TimeSchemeFromString(const std::string& s);  // throws InputError
+
+// The operating state of the contact at one instant.
+struct ContactConditions {
+  double reduced_radius_m = 0;  // R, 1/R = 1/rho1 + 1/rho2 [m]
+  double u1_m_s = 0;            // surface speed of body 1 relative to the contact point [m/s]
+  double u2_m_s = 0;            // surface speed of body 2 [m/s]
+  double load_n_per_m = 0;      // w, load per unit face width [N/m]
+  double temperature_k = 0;     // film temperature (inlet temperature when isothermal) [K]
+  double um() const { return 0.5 * (u1_m_s + u2_m_s); }  // entrainment speed [m/s]
+};
+
+// The film at one time level (the solver's output and its next initial guess).
+struct FilmState {
+  Eigen::VectorXd p_pa;      // pressure at every node, zero at both ends [Pa]
+  Eigen::VectorXd h_m;       // film thickness at every node [m]
+  double h0_m = 0;           // rigid approach [m]
+  double time_s = 0;         // time of this level [s]
+  double travel1_m = 0;      // integral of u1 dt since t = 0: how far surface 1 moved [m]
+  double travel2_m = 0;      // integral of u2 dt [m]
+  bool valid() const { return p_pa.size() > 0 && p_pa.size() == h_m.size(); }
+  double MinFilm() const;      // h_min [m]
+  double CentralFilm(const UniformGrid& g) const;  // h at x = 0 (interpolated) [m]
+  double MaxPressure() const;  // p_max [Pa]
+};
+
+class LineContactSolver {
+ public:
+  struct Options {
+    LinearSolverKind linear_solver = LinearSolverKind::kAuto;
+    int dense_max_nodes = 1025;       // kAuto uses dense LU up to this many nodes [-]
+    int upwind_order = 2;             // Couette-term upwinding: 1 or 2 [-]
+    TimeScheme time_scheme = TimeScheme::kBdf2;
+    double tolerance = 1e-8;          // stop when the scaled residual max-norm < this [-]
+    int max_iterations = 100;         // Newton iterations per solve [-]
+    int gmres_restart = 60;           // Krylov vectors before a restart [-]
+    int gmres_max_iterations = 400;   // per Newton step [-]
+    int preconditioner_band = 24;     // half-band of the elastic matrix in the preconditioner [-]
+    int max_continuation_stages = 12; // load / pressure-viscosity continuation stages [-]
+    double min_step_fraction = 1.0 / 1024;  // smallest line-search step [-]
+    std::vector<std::string> Validate() const;  // every violated rule; empty = valid
+  };
+
+  enum class Termination { kConverged, kMaxIterations, kLineSearchFailed, kLinearSolverFailed,
+                           kInvalidInput };
+  struct IterationRecord {
+    double residual = 0;       // scaled max-norm after the iteration [-]
+    double step = 0;           // line-search step taken (1 = full Newton) [-]
+    int krylov_iterations = 0; // GMRES iterations (0 for dense LU) [-]
+    int cavitated_nodes = 0;   // nodes on the p = 0 branch [-]
+  };
+  struct Summary {
+    Termination termination = Termination::kInvalidInput;
+    std::string message = "Solve() was not called.";
+    int iterations = 0;             // Newton iterations of the final stage [-]
+    int total_iterations = 0;       // including continuation stages [-]
+    int continuation_stages = 0;    // 0 = solved directly [-]
+    int krylov_iterations = 0;      // total GMRES iterations [-]
+    double residual = -1;           // final scaled residual max-norm [-]
+    double load_error = -1;         // |integral p dx - w| / w [-]
+    double wall_time_s = 0;         // [s]
+    std::string linear_solver;      // "dense" or "newton_krylov"
+    int substeps = 1;               // time substeps a transient Step needed [-]
+    std::vector<IterationRecord> history;
+    bool usable() const { return termination == Termination::kConverged; }
+    std::string BriefReport() const;
+  };
+
+  // The lubricant and surface shapes must outlive the solver. surface1/2 may be null
+  // (smooth); they are used only when effects.roughness is on.
+  LineContactSolver(const UniformGrid& grid, double e_prime_pa, const Lubricant& lubricant,
+                    const FilmEffects& effects, const Options& options,
+                    std::shared_ptr<const SurfaceShape> surface1 = nullptr,
+                    std::shared_ptr<const SurfaceShape> surface2 = nullptr);
+  ~LineContactSolver();
+  LineContactSolver(LineContactSolver&&) noexcept;
+  LineContactSolver& operator=(LineContactSolver&&) noexcept;
+
+  const UniformGrid& grid() const;
+  const Options& options() const;
+
+  // A first guess: Hertz pressure (scaled onto the grid) and h0 from the Moes film fit.
+  FilmState InitialGuess(const ContactConditions& c) const;
+
+  // Steady solve. state: the initial guess on entry when valid() (else InitialGuess), the
+  // solution on exit. On failure the state holds the best iterate found and the Summary
+  // says why; it never holds NaN.
+  Summary SolveSteady(const ContactConditions& c, FilmState* state);
+
+  // Transient: BeginTransient records the state at t0 (under conditions c) as history; each
+  // Step advances to state->time_s + dt with the conditions at the new time (BDF1 for the
+  // first step, then the chosen scheme, variable steps allowed). A step that fails is
+  // retried as 2 and then 4 substeps with linearly interpolated conditions (reported in the
+  // Summary). With effects.transient off, Step is a steady solve at the new conditions (the
+  // surfaces still move).
+  void BeginTransient(const ContactConditions& c, const FilmState& initial);
+  Summary Step(const ContactConditions& c_new, double dt_s, FilmState* state);
+
+  // Diagnostics: the scaled steady residual max-norm of a state under conditions c, and
+  // the mass flow per unit width q = rho h um - rho h^3/(12 eta) dp/dx between nodes i and
+  // i+1 (size n-1) [kg/(m s)]; constant along x for a converged steady film.
+  double ResidualNorm(const ContactConditions& c, const FilmState& state) const;
+  Eigen::VectorXd MassFlow(const ContactConditions& c, const FilmState& state) const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+std::string ToString(LineContactSolver::Termination t);
+
+}  // namespace tehl

@@ -1,0 +1,54 @@
+#include "tehl/ehl/grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "base/schema.hpp"
+#include "tehl/ehl/film_effects.hpp"
+#include "tehl/error.hpp"
+
+namespace tehl {
+
+UniformGrid::UniformGrid(double x_start_m, double x_end_m, int n) {
+  ProblemList bad;
+  if (n < 5)
+    bad.Add({"", 0, "UniformGrid::n", std::to_string(n), "too few nodes", "n >= 5"});
+  if (!(x_end_m > x_start_m) || !std::isfinite(x_start_m) || !std::isfinite(x_end_m))
+    bad.Add({"", 0, "UniformGrid::x_end_m", internal::FormatReal(x_end_m),
+             "must exceed x_start_m = " + internal::FormatReal(x_start_m), "x_end_m > x_start_m"});
+  bad.ThrowIfAny();
+  n_ = n;
+  x0_ = x_start_m;
+  dx_ = (x_end_m - x_start_m) / (n - 1);
+}
+
+UniformGrid UniformGrid::AroundHertz(double b, int n, double start_b, double end_b) {
+  return UniformGrid(start_b * b, end_b * b, n);
+}
+
+std::vector<double> UniformGrid::Nodes() const {
+  std::vector<double> x(n_);
+  for (int i = 0; i < n_; ++i) x[i] = this->x(i);
+  return x;
+}
+
+int UniformGrid::NearestNode(double x_m) const {
+  const long i = std::lround((x_m - x0_) / dx_);
+  return static_cast<int>(std::clamp<long>(i, 0, n_ - 1));
+}
+
+std::string FilmEffects::ToString() const {
+  std::string s;
+  auto add = [&](bool on, const char* name) {
+    if (on) s += (s.empty() ? "" : " ") + std::string(name);
+  };
+  add(elastic, "elastic");
+  add(piezoviscous, "piezoviscous");
+  add(compressible, "compressible");
+  add(transient, "transient");
+  add(roughness, "roughness");
+  return s.empty() ? "rigid isoviscous incompressible steady" : s;
+}
+
+}  // namespace tehl

@@ -1,0 +1,594 @@
+#include "tehl/ehl/line_contact_solver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <limits>
+#include <optional>
+#include <cmath>
+#include <sstream>
+
+#include "base/schema.hpp"
+#include "ehl/newton_system.hpp"
+#include "ehl/reynolds_system.hpp"
+#include "tehl/ehl/elastic_deflection.hpp"
+#include "tehl/ehl/film_thickness_formulas.hpp"
+#include "tehl/ehl/surface_roughness.hpp"
+#include "tehl/error.hpp"
+#include "tehl/lubricant/lubricant.hpp"
+#include "tehl/units.hpp"
+
+namespace tehl {
+namespace {
+using internal::FluidLaws;
+using internal::NewtonSystem;
+using internal::ReynoldsSystem;
+using internal::TimeDerivative;
+using Clock = std::chrono::steady_clock;
+}  // namespace
+
+std::string ToString(LinearSolverKind k) {
+  switch (k) {
+    case LinearSolverKind::kAuto: return "auto";
+    case LinearSolverKind::kDense: return "dense";
+    case LinearSolverKind::kNewtonKrylov: return "newton_krylov";
+  }
+  return "?";
+}
+LinearSolverKind LinearSolverKindFromString(const std::string& s) {
+  for (auto k : {LinearSolverKind::kAuto, LinearSolverKind::kDense,
+                 LinearSolverKind::kNewtonKrylov})
+    if (ToString(k) == s) return k;
+  throw InputError(InputProblem{"", 0, "linear_solver", "\"" + s + "\"", "unknown solver",
+                                "auto, dense, newton_krylov"});
+}
+std::string ToString(TimeScheme s) { return s == TimeScheme::kBdf1 ? "bdf1" : "bdf2"; }
+TimeScheme TimeSchemeFromString(const std::string& s) {
+  if (s == "bdf1") return TimeScheme::kBdf1;
+  if (s == "bdf2") return TimeScheme::kBdf2;
+  throw InputError(InputProblem{"", 0, "time_scheme", "\"" + s + "\"", "unknown scheme",
+                                "bdf1, bdf2"});
+}
+std::string ToString(LineContactSolver::Termination t) {
+  using T = LineContactSolver::Termination;
+  switch (t) {
+    case T::kConverged: return "converged";
+    case T::kMaxIterations: return "max_iterations";
+    case T::kLineSearchFailed: return "line_search_failed";
+    case T::kLinearSolverFailed: return "linear_solver_failed";
+    case T::kInvalidInput: return "invalid_input";
+  }
+  return "?";
+}
+
+double FilmState::MinFilm() const { return h_m.size() ? h_m.minCoeff() : 0.0; }
+double FilmState::MaxPressure() const { return p_pa.size() ? p_pa.maxCoeff() : 0.0; }
+double FilmState::CentralFilm(const UniformGrid& g) const {
+  if (!h_m.size()) return 0.0;
+  const double s = (0.0 - g.x_start_m()) / g.dx_m();
+  const int i = std::clamp(static_cast<int>(std::floor(s)), 0, g.size() - 2);
+  const double f = std::clamp(s - i, 0.0, 1.0);
+  return (1 - f) * h_m[i] + f * h_m[i + 1];
+}
+
+std::vector<std::string> LineContactSolver::Options::Validate() const {
+  std::vector<std::string> bad;
+  auto rule = [&](bool ok, const char* field, double v, const char* c) {
+    if (!ok)
+      bad.push_back(std::string("LineContactSolver::Options::") + field + " = " +
+                    internal::FormatReal(v) + " violates " + c);
+  };
+  rule(upwind_order == 1 || upwind_order == 2, "upwind_order", upwind_order, "1 or 2");
+  rule(tolerance > 0 && tolerance < 1, "tolerance", tolerance, "in (0, 1)");
+  rule(max_iterations >= 1, "max_iterations", max_iterations, ">= 1");
+  rule(dense_max_nodes >= 5, "dense_max_nodes", dense_max_nodes, ">= 5");
+  rule(gmres_restart >= 2, "gmres_restart", gmres_restart, ">= 2");
+  rule(gmres_max_iterations >= 1, "gmres_max_iterations", gmres_max_iterations, ">= 1");
+  rule(preconditioner_band >= 0, "preconditioner_band", preconditioner_band, ">= 0");
+  rule(max_continuation_stages >= 0, "max_continuation_stages", max_continuation_stages, ">= 0");
+  rule(min_step_fraction > 0 && min_step_fraction <= 1, "min_step_fraction", min_step_fraction,
+       "in (0, 1]");
+  return bad;
+}
+
+std::string LineContactSolver::Summary::BriefReport() const {
+  std::ostringstream o;
+  o << ToString(termination) << ": " << total_iterations << " Newton iterations";
+  if (continuation_stages) o << " (" << continuation_stages << " continuation stages)";
+  if (krylov_iterations) o << ", " << krylov_iterations << " GMRES iterations";
+  if (substeps > 1) o << ", " << substeps << " substeps";
+  o << ", residual " << residual << ", load error " << load_error << ", " << linear_solver << ", "
+    << wall_time_s << " s";
+  if (!usable()) o << ": " << message;
+  return o.str();
+}
+
+// ---------------------------------------------------------------------------------------
+class LineContactSolver::Impl {
+ public:
+  Impl(const UniformGrid& grid, double e_prime, const Lubricant& lub, const FilmEffects& eff,
+       const Options& opt, std::shared_ptr<const SurfaceShape> s1,
+       std::shared_ptr<const SurfaceShape> s2)
+      : grid_(grid), e_prime_(e_prime), lub_(lub), eff_(eff), opt_(opt), s1_(std::move(s1)),
+        s2_(std::move(s2)), sys_(grid.size(), grid.dx_m(), opt.upwind_order) {
+    ProblemList bad;
+    for (const auto& m : opt.Validate()) bad.Add({"", 0, "LineContactSolver::Options", "", m, ""});
+    if (!(e_prime > 0))
+      bad.Add({"", 0, "e_prime_pa", internal::FormatReal(e_prime), "must be > 0", "E' > 0 [Pa]"});
+    bad.ThrowIfAny();
+    const int n = grid.size();
+    x2_.resize(n);
+    for (int i = 0; i < n; ++i) x2_[i] = 0.5 * grid.x(i) * grid.x(i);
+    if (eff.elastic) elastic_.emplace(n, grid.dx_m(), e_prime);
+    if (eff.roughness) heights_.setZero(n);
+    const bool dense = opt.linear_solver == LinearSolverKind::kDense ||
+                       (opt.linear_solver == LinearSolverKind::kAuto && n <= opt.dense_max_nodes);
+    if (dense) {
+      linear_ = internal::MakeDenseLuSolver();
+    } else {
+      internal::KrylovSettings k;
+      k.restart = opt.gmres_restart;
+      k.max_iterations = opt.gmres_max_iterations;
+      k.band = opt.preconditioner_band;
+      linear_ = internal::MakeNewtonKrylovSolver(k);
+    }
+  }
+
+  const UniformGrid& grid() const { return grid_; }
+  const Options& options() const { return opt_; }
+
+  FluidLaws Fluid(const ContactConditions& c, double pressure_scale = 1.0) const {
+    FluidLaws f;
+    f.viscosity = &lub_.viscosity();
+    f.density = &lub_.density();
+    f.piezoviscous = eff_.piezoviscous;
+    f.compressible = eff_.compressible;
+    f.temperature_k = c.temperature_k;
+    f.pressure_scale = pressure_scale;
+    return f;
+  }
+
+  // Film h = h0 + x^2/(2R) + v(p) - heights at the state's travel.
+  void Film(const ContactConditions& c, FilmState* s) const {
+    const int n = grid_.size();
+    s->h_m.resize(n);
+    if (elastic_) {
+      elastic_->Apply(s->p_pa.data(), s->h_m.data());
+    } else {
+      s->h_m.setZero();
+    }
+    s->h_m.array() += s->h0_m + x2_.array() / c.reduced_radius_m;
+    if (eff_.roughness) {
+      const std::vector<double> x = grid_.Nodes();
+      heights_.setZero();
+      Eigen::VectorXd tmp(n);
+      for (const auto& [shape, travel] : {std::pair{s1_.get(), s->travel1_m},
+                                          std::pair{s2_.get(), s->travel2_m}}) {
+        if (!shape) continue;
+        SampleHeights(*shape, x.data(), n, travel, tmp.data());
+        heights_ += tmp;
+      }
+      s->h_m -= heights_;
+    }
+  }
+
+  struct Scales {
+    double p_ref, h_ref;
+  };
+
+  Scales ScalesFor(const ContactConditions& c) const {
+    const HertzScales hz = LineContactHertz(c.load_n_per_m, c.reduced_radius_m, e_prime_);
+    Scales s;
+    s.h_ref = std::max(EstimateCentralFilm(c), 1e-12);
+    s.p_ref = eff_.elastic ? hz.max_pressure_pa
+                           : c.load_n_per_m / std::sqrt(2.0 * c.reduced_radius_m * s.h_ref);
+    return s;
+  }
+
+  double EstimateCentralFilm(const ContactConditions& c) const {
+    const double eta0 = lub_.viscosity().Evaluate(0.0, c.temperature_k).eta_pa_s;
+    if (!eff_.elastic && !eff_.piezoviscous)
+      return MartinRigidFilmM(eta0, c.um(), c.reduced_radius_m, c.load_n_per_m);
+    const double alpha = eff_.piezoviscous ? lub_.viscosity().PressureViscosityCoefficient() : 0.0;
+    const DimensionlessGroups g = LineContactGroups(eta0, alpha, c.um(), c.load_n_per_m,
+                                                    c.reduced_radius_m, e_prime_);
+    return MoesCentralFilmM(g.U, g.G, g.W, c.reduced_radius_m);
+  }
+
+  FilmState InitialGuess(const ContactConditions& c) const {
+    const int n = grid_.size();
+    FilmState s;
+    s.p_pa.setZero(n);
+    const double h_c = EstimateCentralFilm(c);
+    const HertzScales hz = LineContactHertz(c.load_n_per_m, c.reduced_radius_m, e_prime_);
+    const double half = eff_.elastic ? hz.half_width_m
+                                     : 2.0 * std::sqrt(2.0 * c.reduced_radius_m * h_c);
+    for (int i = 1; i < n - 1; ++i) {
+      const double xi = grid_.x(i) / half;
+      if (std::abs(xi) < 1.0) s.p_pa[i] = std::sqrt(1.0 - xi * xi);
+    }
+    if (s.p_pa.sum() <= 0) s.p_pa.segment(1, n - 2).setConstant(1.0);  // grid finer than b
+    s.p_pa *= c.load_n_per_m / (grid_.dx_m() * s.p_pa.sum());
+    s.h0_m = 0.0;
+    Film(c, &s);
+    s.h0_m = h_c - s.CentralFilm(grid_);
+    Film(c, &s);
+    return s;
+  }
+
+  // Row weights c_i = -1/|dr_i/dP_i| at the current linearization: the complementarity
+  // min(P_i, c_i r_i) then compares two quantities of the same size (a pressure change),
+  // however much rho h^3/(12 eta) varies along the film. Negative because the cavitated
+  // branch has -r >= 0: a divergent gap could carry more flow than arrives.
+  void UpdateRowWeights(const Scales& sc) {
+    const int n = grid_.size();
+    row_weight_.setZero(n);
+    NewtonSystem ns = SystemFor(sc, 1.0);
+    double largest = 0.0;
+    for (int i = 1; i < n - 1; ++i) {
+      row_weight_[i] = std::abs(ns.Diagonal(i)) * sc.p_ref;
+      largest = std::max(largest, row_weight_[i]);
+    }
+    for (int i = 1; i < n - 1; ++i)
+      row_weight_[i] = -1.0 / std::max(row_weight_[i], 1e-300 + 1e-14 * largest);
+  }
+
+  NewtonSystem SystemFor(const Scales& sc, double load) const {
+    NewtonSystem ns;
+    ns.n = grid_.size();
+    ns.dx = grid_.dx_m();
+    ns.p_ref = sc.p_ref;
+    ns.h_ref = sc.h_ref;
+    ns.row_scale = &row_weight_;
+    ns.load = load;
+    ns.a = &sys_.dr_dp();
+    ns.b = &sys_.dr_dh();
+    ns.elastic = elastic_ ? &*elastic_ : nullptr;
+    return ns;
+  }
+
+  // Scaled residual F(z) of a state; false if the film is not positive or not finite.
+  // `linearize` also refreshes the derivatives and the row weights.
+  bool Residual(const ContactConditions& c, const FluidLaws& fluid, const Scales& sc,
+                const TimeDerivative& td, FilmState* s, Eigen::VectorXd* f, bool linearize) {
+    Film(c, s);
+    if (!s->h_m.allFinite() || s->h_m.minCoeff() <= 0.0) return false;
+    sys_.Evaluate(fluid, c.um(), s->p_pa, s->h_m, td, linearize);
+    if (linearize) UpdateRowWeights(sc);
+    const int n = grid_.size(), m = n - 2;
+    f->resize(m + 1);
+    cavitated_.assign(n, 0);
+    for (int i = 1; i <= m; ++i) {
+      const double pi = s->p_pa[i] / sc.p_ref;
+      const double ri = row_weight_[i] * sys_.residual()[i];
+      cavitated_[i] = pi <= ri;
+      (*f)[i - 1] = std::min(pi, ri);
+    }
+    (*f)[m] = (grid_.dx_m() * s->p_pa.sum() - c.load_n_per_m) / c.load_n_per_m;
+    return f->allFinite();
+  }
+
+  Summary Newton(const ContactConditions& c, double pressure_scale, const TimeDerivative& td,
+                 FilmState* s) {
+    Summary sum;
+    sum.linear_solver = linear_->Name();
+    const FluidLaws fluid = Fluid(c, pressure_scale);
+    const Scales sc = ScalesFor(c);
+    const int n = grid_.size(), m = n - 2;
+    Eigen::VectorXd f, f_trial, dz;
+    if (!Residual(c, fluid, sc, td, s, &f, true)) {
+      // A non-positive film from the guess: lift h0 until the film is positive.
+      const double lift = std::max(0.0, -s->h_m.minCoeff()) + sc.h_ref;
+      s->h0_m += lift;
+      if (!Residual(c, fluid, sc, td, s, &f, true)) {
+        sum.termination = Termination::kInvalidInput;
+        sum.message = "the initial guess gives a non-positive or non-finite film";
+        return sum;
+      }
+    }
+    NewtonSystem ns = SystemFor(sc, c.load_n_per_m);
+    FilmState trial = *s;
+    double norm = f.lpNorm<Eigen::Infinity>();
+    sum.residual = norm;
+    for (int it = 0; it < opt_.max_iterations; ++it) {
+      if (norm < opt_.tolerance) break;
+      ns.cavitated = cavitated_;
+      std::string why;
+      if (!linear_->Solve(ns, -f, &dz, &why)) {
+        sum.termination = Termination::kLinearSolverFailed;
+        sum.message = why;
+        return Finish(c, s, sum);
+      }
+      sum.krylov_iterations += linear_->last_krylov_iterations();
+      const double phi0 = f.norm();
+      double lambda = 1.0;
+      bool accepted = false;
+      while (lambda >= opt_.min_step_fraction) {
+        // Projected step: p >= 0 holds at the solution, so negative pressures from a step
+        // that moves the cavitation boundary are set to zero at once (without this the
+        // boundary creeps one node per damped iteration on fine grids).
+        trial.p_pa = s->p_pa;
+        trial.p_pa.segment(1, m) += lambda * sc.p_ref * dz.head(m);
+        trial.p_pa = trial.p_pa.cwiseMax(0.0);
+        trial.h0_m = s->h0_m + lambda * sc.h_ref * dz[m];
+        trial.travel1_m = s->travel1_m;
+        trial.travel2_m = s->travel2_m;
+        if (Residual(c, fluid, sc, td, &trial, &f_trial, false) &&
+            f_trial.norm() <= (1.0 - 1e-4 * lambda) * phi0) {
+          accepted = true;
+          break;
+        }
+        lambda *= 0.5;
+      }
+      if (!accepted) {
+        sum.iterations = it;
+        sum.termination = Termination::kLineSearchFailed;
+        sum.message = "line search found no decrease of the residual (step " +
+                      internal::FormatReal(lambda) + ") at residual " + internal::FormatReal(norm);
+        Residual(c, fluid, sc, td, s, &f, false);
+        return Finish(c, s, sum);
+      }
+      std::swap(s->p_pa, trial.p_pa);
+      s->h0_m = trial.h0_m;
+      Residual(c, fluid, sc, td, s, &f, true);
+      norm = f.lpNorm<Eigen::Infinity>();
+      IterationRecord rec;
+      rec.residual = norm;
+      rec.step = lambda;
+      rec.krylov_iterations = linear_->last_krylov_iterations();
+      rec.cavitated_nodes = static_cast<int>(std::count(cavitated_.begin(), cavitated_.end(), 1));
+      sum.history.push_back(rec);
+      sum.iterations = it + 1;
+    }
+    sum.residual = norm;
+    if (norm < opt_.tolerance) {
+      sum.termination = Termination::kConverged;
+      sum.message = "converged";
+    } else {
+      sum.termination = Termination::kMaxIterations;
+      sum.message = "no convergence in " + std::to_string(opt_.max_iterations) +
+                    " Newton iterations (residual " + internal::FormatReal(norm) + ")";
+    }
+    return Finish(c, s, sum);
+  }
+
+  Summary Finish(const ContactConditions& c, FilmState* s, Summary sum) {
+    // The reported pressure is the complementarity solution: p >= 0 exactly.
+    s->p_pa = s->p_pa.cwiseMax(0.0);
+    Film(c, s);
+    sum.total_iterations = sum.iterations;
+    sum.load_error =
+        std::abs(grid_.dx_m() * s->p_pa.sum() - c.load_n_per_m) / c.load_n_per_m;
+    return sum;
+  }
+
+  bool ValidConditions(const ContactConditions& c, Summary* sum) const {
+    std::string bad;
+    if (!(c.reduced_radius_m > 0) || !std::isfinite(c.reduced_radius_m)) bad += " R <= 0;";
+    if (!(c.load_n_per_m > 0) || !std::isfinite(c.load_n_per_m)) bad += " w <= 0;";
+    if (!(c.um() > 0) || !std::isfinite(c.um()))
+      bad += " entrainment speed um <= 0 (the inlet is at x_start);";
+    if (!(c.temperature_k > 0)) bad += " T <= 0 K;";
+    if (bad.empty()) return true;
+    sum->termination = Termination::kInvalidInput;
+    sum->message = "invalid contact conditions:" + bad;
+    return false;
+  }
+
+  // Newton, then continuation in load and pressure-viscosity coefficient if it fails.
+  Summary Solve(const ContactConditions& c, const TimeDerivative& td, FilmState* s) {
+    const auto t0 = Clock::now();
+    Summary sum;
+    if (!ValidConditions(c, &sum)) return sum;
+    if (!s->valid() || s->p_pa.size() != grid_.size()) *s = InitialGuess(c);
+    const FilmState start = *s;
+    sum = Newton(c, 1.0, td, s);
+    int total = sum.total_iterations, krylov = sum.krylov_iterations, stages = 0;
+    if (!sum.usable() && opt_.max_continuation_stages > 0 && !td.active) {
+      // Continuation: theta scales the load and the pressure-viscosity coefficient.
+      const std::string first_failure = sum.message;
+      *s = InitialGuess(ContactConditions{c.reduced_radius_m, c.u1_m_s, c.u2_m_s,
+                                          0.05 * c.load_n_per_m, c.temperature_k});
+      double theta = 0.05, growth = 2.0;
+      Summary stage;
+      while (stages < opt_.max_continuation_stages) {
+        ContactConditions ci = c;
+        ci.load_n_per_m = theta * c.load_n_per_m;
+        FilmState trial = *s;
+        stage = Newton(ci, theta, td, &trial);
+        ++stages;
+        total += stage.total_iterations;
+        krylov += stage.krylov_iterations;
+        if (stage.usable()) {
+          *s = trial;
+          if (theta >= 1.0) break;
+          theta = std::min(1.0, theta * growth);
+        } else {
+          growth = std::sqrt(growth);
+          theta = theta / std::sqrt(growth) ;
+          if (growth < 1.01) break;
+        }
+      }
+      sum = stage;
+      if (!sum.usable()) {
+        sum.message = "no convergence directly (" + first_failure + ") nor by continuation in "
+                      "load and pressure-viscosity coefficient (" + stage.message + ")";
+        if (!s->valid()) *s = start;
+      }
+    }
+    sum.total_iterations = total;
+    sum.krylov_iterations = krylov;
+    sum.continuation_stages = stages;
+    sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    return sum;
+  }
+
+  // --- transient ----------------------------------------------------------------------
+  struct History {
+    int levels = 0;            // stored levels (1 or 2)
+    Eigen::VectorXd q1, q2;    // rho h at t_{n-1}, t_{n-2}
+    double dt_prev = 0;        // t_{n-1} - t_{n-2}
+    ContactConditions c_prev;  // conditions at t_{n-1}
+  };
+
+  Eigen::VectorXd RhoH(const ContactConditions& c, FilmState s) {
+    Film(c, &s);
+    TimeDerivative none;
+    sys_.Evaluate(Fluid(c), c.um(), s.p_pa, s.h_m, none, false);
+    return sys_.rho_h();
+  }
+
+  void BeginTransient(const ContactConditions& c, const FilmState& s) {
+    hist_ = History{};
+    hist_.levels = 1;
+    hist_.q1 = RhoH(c, s);
+    hist_.c_prev = c;
+  }
+
+  TimeDerivative Derivative(double dt) const {
+    TimeDerivative td;
+    if (!eff_.transient || hist_.levels == 0) return td;
+    td.active = true;
+    td.q1 = hist_.q1;
+    if (hist_.levels >= 2 && opt_.time_scheme == TimeScheme::kBdf2) {
+      // Variable-step BDF2 (omega = dt_n / dt_{n-1}).
+      const double w = dt / hist_.dt_prev;
+      td.a0 = (1 + 2 * w) / ((1 + w) * dt);
+      td.a1 = -(1 + w) / dt;
+      td.a2 = w * w / ((1 + w) * dt);
+      td.q2 = hist_.q2;
+    } else {
+      td.a0 = 1.0 / dt;
+      td.a1 = -1.0 / dt;
+      td.a2 = 0.0;
+      td.q2 = hist_.q1;
+    }
+    return td;
+  }
+
+  Summary OneStep(const ContactConditions& c, double dt, FilmState* s) {
+    FilmState next = *s;
+    next.time_s = s->time_s + dt;
+    next.travel1_m = s->travel1_m + 0.5 * dt * (hist_.c_prev.u1_m_s + c.u1_m_s);
+    next.travel2_m = s->travel2_m + 0.5 * dt * (hist_.c_prev.u2_m_s + c.u2_m_s);
+    const TimeDerivative td = Derivative(dt);
+    Summary sum = Solve(c, td, &next);
+    if (sum.usable()) {
+      *s = next;
+      hist_.q2 = hist_.q1;
+      hist_.q1 = RhoH(c, next);
+      hist_.levels = std::min(hist_.levels + 1, 2);
+      hist_.dt_prev = dt;
+      hist_.c_prev = c;
+    }
+    return sum;
+  }
+
+  Summary Step(const ContactConditions& c_new, double dt, FilmState* s) {
+    const auto t0 = Clock::now();
+    Summary sum;
+    if (!(dt > 0) || !std::isfinite(dt)) {
+      sum.message = "time step must be > 0";
+      return sum;
+    }
+    if (hist_.levels == 0) BeginTransient(c_new, *s);
+    const History saved_hist = hist_;
+    const FilmState saved_state = *s;
+    int total = 0, krylov = 0;
+    for (int parts : {1, 2, 4}) {
+      hist_ = saved_hist;
+      *s = saved_state;
+      const ContactConditions c_old = hist_.c_prev;
+      bool ok = true;
+      for (int k = 1; k <= parts && ok; ++k) {
+        const double f = static_cast<double>(k) / parts;
+        ContactConditions ck = c_new;
+        ck.reduced_radius_m = c_old.reduced_radius_m + f * (c_new.reduced_radius_m - c_old.reduced_radius_m);
+        ck.u1_m_s = c_old.u1_m_s + f * (c_new.u1_m_s - c_old.u1_m_s);
+        ck.u2_m_s = c_old.u2_m_s + f * (c_new.u2_m_s - c_old.u2_m_s);
+        ck.load_n_per_m = c_old.load_n_per_m + f * (c_new.load_n_per_m - c_old.load_n_per_m);
+        ck.temperature_k = c_old.temperature_k + f * (c_new.temperature_k - c_old.temperature_k);
+        sum = OneStep(ck, dt / parts, s);
+        total += sum.total_iterations;
+        krylov += sum.krylov_iterations;
+        ok = sum.usable();
+      }
+      sum.substeps = parts;
+      if (ok) break;
+    }
+    if (!sum.usable()) {
+      hist_ = saved_hist;
+      // Keep the best iterate of the last attempt (finite by construction).
+    }
+    sum.total_iterations = total;
+    sum.krylov_iterations = krylov;
+    sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    return sum;
+  }
+
+  double ResidualNorm(const ContactConditions& c, const FilmState& st) {
+    FilmState s = st;
+    Eigen::VectorXd f;
+    if (!Residual(c, Fluid(c), ScalesFor(c), TimeDerivative{}, &s, &f, true))
+      return std::numeric_limits<double>::infinity();
+    return f.lpNorm<Eigen::Infinity>();
+  }
+
+  Eigen::VectorXd MassFlow(const ContactConditions& c, const FilmState& st) {
+    FilmState s = st;
+    Film(c, &s);
+    sys_.Evaluate(Fluid(c), c.um(), s.p_pa, s.h_m, TimeDerivative{}, false);
+    return sys_.MassFlow(c.um(), s.p_pa);
+  }
+
+ private:
+  UniformGrid grid_;
+  double e_prime_;
+  const Lubricant& lub_;
+  FilmEffects eff_;
+  Options opt_;
+  std::shared_ptr<const SurfaceShape> s1_, s2_;
+  ReynoldsSystem sys_;
+  std::optional<ElasticDeflection> elastic_;
+  std::unique_ptr<internal::NewtonLinearSolver> linear_;
+  Eigen::VectorXd x2_, row_weight_;
+  mutable Eigen::VectorXd heights_;
+  std::vector<char> cavitated_;
+  History hist_;
+};
+
+LineContactSolver::LineContactSolver(const UniformGrid& grid, double e_prime_pa,
+                                     const Lubricant& lubricant, const FilmEffects& effects,
+                                     const Options& options,
+                                     std::shared_ptr<const SurfaceShape> surface1,
+                                     std::shared_ptr<const SurfaceShape> surface2)
+    : impl_(std::make_unique<Impl>(grid, e_prime_pa, lubricant, effects, options,
+                                   std::move(surface1), std::move(surface2))) {}
+LineContactSolver::~LineContactSolver() = default;
+LineContactSolver::LineContactSolver(LineContactSolver&&) noexcept = default;
+LineContactSolver& LineContactSolver::operator=(LineContactSolver&&) noexcept = default;
+const UniformGrid& LineContactSolver::grid() const { return impl_->grid(); }
+const LineContactSolver::Options& LineContactSolver::options() const { return impl_->options(); }
+FilmState LineContactSolver::InitialGuess(const ContactConditions& c) const {
+  return impl_->InitialGuess(c);
+}
+LineContactSolver::Summary LineContactSolver::SolveSteady(const ContactConditions& c,
+                                                          FilmState* state) {
+  return impl_->Solve(c, internal::TimeDerivative{}, state);
+}
+void LineContactSolver::BeginTransient(const ContactConditions& c, const FilmState& initial) {
+  impl_->BeginTransient(c, initial);
+}
+LineContactSolver::Summary LineContactSolver::Step(const ContactConditions& c, double dt,
+                                                   FilmState* state) {
+  return impl_->Step(c, dt, state);
+}
+double LineContactSolver::ResidualNorm(const ContactConditions& c, const FilmState& s) const {
+  return impl_->ResidualNorm(c, s);
+}
+Eigen::VectorXd LineContactSolver::MassFlow(const ContactConditions& c,
+                                            const FilmState& s) const {
+  return impl_->MassFlow(c, s);
+}
+
+}  // namespace tehl

@@ -1,0 +1,102 @@
+#include "ehl/newton_system.hpp"
+
+#include <Eigen/LU>
+
+#include "tehl/ehl/elastic_deflection.hpp"
+
+namespace tehl::internal {
+
+void NewtonSystem::Apply(const Eigen::VectorXd& x, Eigen::VectorXd* y) const {
+  const int m = n - 2;
+  Eigen::VectorXd pv = Eigen::VectorXd::Zero(n);
+  pv.segment(1, m) = p_ref * x.head(m);
+  Eigen::VectorXd hv = Eigen::VectorXd::Constant(n, h_ref * x[m]);
+  if (elastic) {
+    Eigen::VectorXd kv(n);
+    elastic->Apply(pv.data(), kv.data());
+    hv += kv;
+  }
+  y->resize(m + 1);
+  for (int i = 1; i <= m; ++i) {
+    if (cavitated[i]) {
+      (*y)[i - 1] = x[i - 1];
+      continue;
+    }
+    double s = 0.0;
+    for (int c = 0; c < 4; ++c) {
+      const int k = i - 2 + c;
+      if (k < 0 || k >= n) continue;
+      s += (*a)(i, c) * pv[k] + (*b)(i, c) * hv[k];
+    }
+    (*y)[i - 1] = (*row_scale)[i] * s;
+  }
+  (*y)[m] = dx * pv.sum() / load;
+}
+
+Eigen::MatrixXd NewtonSystem::Dense() const {
+  const int m = n - 2;
+  Eigen::MatrixXd j = Eigen::MatrixXd::Zero(m + 1, m + 1);
+  Eigen::VectorXd kcoef;
+  if (elastic) {
+    kcoef.resize(n);
+    for (int k = 0; k < n; ++k) kcoef[k] = elastic->Coefficient(k);
+  }
+  for (int i = 1; i <= m; ++i) {
+    const int row = i - 1;
+    if (cavitated[i]) {
+      j(row, row) = 1.0;
+      continue;
+    }
+    double bsum = 0.0;
+    const double rs = (*row_scale)[i];
+    for (int c = 0; c < 4; ++c) {
+      const int k = i - 2 + c;
+      if (k < 0 || k >= n) continue;
+      const double bk = (*b)(i, c);
+      bsum += bk;
+      if (k >= 1 && k <= m) j(row, k - 1) += rs * p_ref * (*a)(i, c);
+      if (elastic && bk != 0.0) {
+        const double f = rs * p_ref * bk;
+        for (int col = 1; col <= m; ++col) j(row, col - 1) += f * kcoef[std::abs(k - col)];
+      }
+    }
+    j(row, m) = rs * h_ref * bsum;
+  }
+  j.row(m).head(m).setConstant(dx * p_ref / load);
+  return j;
+}
+
+double NewtonSystem::Diagonal(int i) const {
+  double d = (*a)(i, 2);
+  if (elastic)
+    for (int c = 0; c < 4; ++c) {
+      const int k = i - 2 + c;
+      if (k >= 0 && k < n) d += (*b)(i, c) * elastic->Coefficient(std::abs(k - i));
+    }
+  return d;
+}
+
+namespace {
+
+class DenseLuSolver final : public NewtonLinearSolver {
+ public:
+  bool Solve(const NewtonSystem& system, const Eigen::VectorXd& rhs, Eigen::VectorXd* dz,
+             std::string* why) override {
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(system.Dense());
+    *dz = lu.solve(rhs);
+    if (!dz->allFinite()) {
+      *why = "dense LU: singular Jacobian";
+      return false;
+    }
+    return true;
+  }
+  std::string Name() const override { return "dense"; }
+};
+
+}  // namespace
+
+std::unique_ptr<NewtonLinearSolver> MakeDenseLuSolver() {
+  return std::make_unique<DenseLuSolver>();
+}
+
+}  // namespace tehl::internal
