@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands = {
       AddCaseCommand(app),
       AddLubricantCommand(app),
+      AddGearCommand(app),
   };
   try {
     app.parse(argc, argv);

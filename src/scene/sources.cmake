@@ -2,4 +2,5 @@
 list(APPEND TEHL_SOURCES
   src/scene/case_schema.cpp
   src/scene/case_reader.cpp
+  src/scene/gear_case.cpp
 )

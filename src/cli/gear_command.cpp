@@ -1,0 +1,242 @@
+// tehl gear CASE [--csv FILE] [--profile FILE] [--points N]
+// The gear pair of a case: geometry, contact ratios, path of contact, kinematics, load,
+// Hertz scales and mesh stiffness by each method. Exit 2 (with every problem) for bad
+// geometry.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "scene/case_reader.hpp"
+#include "scene/gear_case.hpp"
+#include "tehl/error.hpp"
+#include "tehl/gear/path_of_contact.hpp"
+#include "tehl/gear/tooth_blank.hpp"
+#include "tehl/gear/tooth_profile.hpp"
+#include "tehl/units.hpp"
+
+namespace tehl::cli {
+namespace {
+
+std::string Fmt(const char* format, double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, x);
+  return buf;
+}
+
+// One line "label  pinion  wheel".
+void Row(std::ostream& o, const std::string& label, const std::string& a, const std::string& b) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "  %-30s %14s %14s\n", label.c_str(), a.c_str(), b.c_str());
+  o << buf;
+}
+
+void Geometry(std::ostream& o, const internal::GearCase& c) {
+  const GearPair& p = *c.pair;
+  const GearPairSpec& s = p.spec();
+  const bool asym = s.drive_pressure_angle_rad != s.coast_pressure_angle_rad;
+  o << "Gear pair: " << (s.internal ? "internal" : "external") << ", "
+    << (s.helix_angle_rad > 0 ? "helical (film model: transverse section as spur)" : "spur") << ", "
+    << (asym ? "asymmetric teeth" : "symmetric teeth") << "\n";
+  o << "  module m_n = " << Fmt("%.4f", s.module_m * 1e3)
+    << " mm, face width b = " << Fmt("%.3f", s.face_width_m * 1e3) << " mm, pressure angle "
+    << Fmt("%.4f", RadToDeg(s.drive_pressure_angle_rad)) << " deg"
+    << (asym ? " (drive) / " + Fmt("%.4f", RadToDeg(s.coast_pressure_angle_rad)) + " deg (coast)"
+             : std::string())
+    << (s.helix_angle_rad > 0 ? ", helix " + Fmt("%.3f", RadToDeg(s.helix_angle_rad)) + " deg"
+                              : std::string())
+    << "\n";
+  o << "  basic rack: h_aP = " << Fmt("%.3f", s.addendum_coefficient)
+    << " m, h_fP = " << Fmt("%.3f", s.dedendum_coefficient)
+    << " m, rho_fP = " << Fmt("%.3f", s.root_fillet_coefficient) << " m\n";
+  const GearGeometry& g1 = p.pinion();
+  const GearGeometry& g2 = p.wheel();
+  auto mm = [](double m) { return Fmt("%.4f", m * 1e3); };
+  Row(o, "", "pinion", s.internal ? "ring" : "wheel");
+  Row(o, "teeth z", std::to_string(g1.teeth), std::to_string(g2.teeth));
+  Row(o, "profile shift x", Fmt("%.4f", g1.profile_shift), Fmt("%.4f", g2.profile_shift));
+  Row(o, "pitch radius r [mm]", mm(g1.pitch_radius_m), mm(g2.pitch_radius_m));
+  Row(o, asym ? "base radius r_b, drive [mm]" : "base radius r_b [mm]", mm(g1.drive.base_radius_m),
+      mm(g2.drive.base_radius_m));
+  if (asym)
+    Row(o, "base radius r_b, coast [mm]", mm(g1.coast.base_radius_m), mm(g2.coast.base_radius_m));
+  Row(o, "tip radius r_a [mm]", mm(g1.tip_radius_m), mm(g2.tip_radius_m));
+  Row(o, "root radius r_f [mm]", mm(g1.root_radius_m), mm(g2.root_radius_m));
+  Row(o, "form radius r_F [mm]", mm(g1.drive.form_radius_m), mm(g2.drive.form_radius_m));
+  Row(o, "pitch thickness s [mm]", mm(g1.reference_thickness_m), mm(g2.reference_thickness_m));
+  Row(o, "top land s_a [mm]", mm(g1.tip_thickness_m), mm(g2.tip_thickness_m));
+  Row(o, "pointed-tip radius [mm]", g1.internal ? "-" : mm(g1.pointed_tip_radius_m),
+      g2.internal ? "-" : mm(g2.pointed_tip_radius_m));
+  Row(o, "x_min without undercut", Fmt("%.4f", g1.drive.min_shift_no_undercut),
+      g2.internal ? "-" : Fmt("%.4f", g2.drive.min_shift_no_undercut));
+  if (asym)
+    Row(o, "K = r_bc / r_bd", Fmt("%.4f", g1.BaseRadiusRatio()), Fmt("%.4f", g2.BaseRadiusRatio()));
+  o << "  centre distance a = " << mm(p.center_distance_m())
+    << " mm (a0 = " << mm(p.reference_center_distance_m())
+    << " mm, y = " << Fmt("%.5f", p.center_distance_modification()) << ", zero backlash at "
+    << mm(p.zero_backlash_center_distance_m()) << " mm), backlash "
+    << Fmt("%.2f", std::abs(p.backlash_m()) < 5e-9 ? 0.0 : p.backlash_m() * 1e6) << " um\n";
+  o << "  radial clearances: pinion tip " << mm(p.pinion_tip_clearance_m()) << " mm, wheel tip "
+    << mm(p.wheel_tip_clearance_m()) << " mm\n";
+  for (Flank f : {Flank::kDrive, Flank::kCoast}) {
+    if (f == Flank::kCoast && !asym) break;
+    const LineOfAction& l = p.line(f);
+    o << "  " << (asym ? ToString(f) + " flank: " : std::string()) << "working pressure angle "
+      << Fmt("%.4f", RadToDeg(l.working_pressure_angle_rad))
+      << " deg, base pitch p_b = " << mm(l.base_pitch_m)
+      << " mm, eps_alpha = " << Fmt("%.4f", l.contact_ratio) << "\n";
+  }
+  if (s.helix_angle_rad > 0)
+    o << "  eps_beta = " << Fmt("%.4f", p.face_contact_ratio())
+      << ", eps_gamma = " << Fmt("%.4f", p.total_contact_ratio()) << "\n";
+}
+
+void Path(std::ostream& o, const internal::GearCase& c) {
+  const GearPair& p = *c.pair;
+  const PathOfContact path(p, c.operating.pinion_speed_rad_s);
+  const LineOfAction& l = path.line();
+  auto mm = [](double m) { return Fmt("%.3f", m * 1e3); };
+  o << "\nPath of contact (drive flanks), along the line of action, T1T2 = "
+    << mm(l.tangent_length_m) << " mm:\n";
+  o << "  from T1 [mm]:  A " << mm(l.a_m) << "  B " << mm(l.b_m) << "  C " << mm(l.c_m) << "  D "
+    << mm(l.d_m) << "  E " << mm(l.e_m) << "\n";
+  o << "  from A  [mm]:  AB " << mm(path.s_b_m()) << "  AC " << mm(path.s_c_m()) << "  AD "
+    << mm(path.s_d_m()) << "  AE " << mm(path.length_m()) << " (g_alpha)\n";
+  o << "  single contact B-D " << mm(std::max(0.0, path.s_d_m() - path.s_b_m()))
+    << " mm; mesh period " << Fmt("%.4f", path.mesh_period_s() * 1e3) << " ms, A to E "
+    << Fmt("%.4f", path.duration_s() * 1e3) << " ms\n";
+
+  const ToothLoad load = NominalToothLoad(p, c.operating);
+  o << "\nOperating point: pinion " << Fmt("%.2f", RadPerSToRpm(path.pinion_speed_rad_s()))
+    << " rpm (" << Fmt("%.3f", path.pinion_speed_rad_s()) << " rad/s), wheel "
+    << Fmt("%.2f", RadPerSToRpm(path.wheel_speed_rad_s()))
+    << " rpm, T1 = " << Fmt("%.3f", c.operating.pinion_torque_nm)
+    << " N m, P = " << Fmt("%.3f", c.power_w * 1e-3) << " kW\n";
+  o << "  normal load F_bt = T1 / r_b1 = " << Fmt("%.2f", load.normal_force_n)
+    << " N, w = F_bt / b = " << Fmt("%.3f", load.load_per_width_n_per_m * 1e-3) << " kN/m\n";
+
+  const double e_prime = c.ReducedModulusPa();
+  const ContactPoint pc = path.At(path.s_c_m());
+  const HertzScales h = LineContactHertz(load.load_per_width_n_per_m, pc.reduced_radius_m, e_prime);
+  o << "  pitch point C (full load w): R = " << mm(pc.reduced_radius_m)
+    << " mm, um = " << Fmt("%.4f", pc.um_m_s) << " m/s, E' = " << Fmt("%.2f", e_prime * 1e-9)
+    << " GPa, p_H = " << Fmt("%.1f", h.max_pressure_pa * 1e-6)
+    << " MPa, b = " << Fmt("%.1f", h.half_width_m * 1e6) << " um\n";
+  for (const auto& [name, s] : {std::pair<const char*, double>{"A", 0.0}, {"E", path.length_m()}}) {
+    const ContactPoint q = path.At(s);
+    o << "  at " << name << ": R = " << mm(q.reduced_radius_m)
+      << " mm, u1 = " << Fmt("%.4f", q.u1_m_s) << ", u2 = " << Fmt("%.4f", q.u2_m_s)
+      << " m/s, SRR = " << Fmt("%.4f", q.srr) << "\n";
+  }
+}
+
+void Stiffness(std::ostream& o, const internal::GearCase& c) {
+  const GearPair& p = *c.pair;
+  const PathOfContact path(p, c.operating.pinion_speed_rad_s);
+  const double b_mm = p.spec().face_width_m * 1e3;
+  auto per_width = [&](double k) { return Fmt("%.3f", k * 1e-6 / b_mm); };  // N/(mm um)
+  o << "\nMesh stiffness per unit face width [N/(mm um)]:\n";
+  char head[160];
+  std::snprintf(head, sizeof head, "  %-18s %12s %12s %12s %12s\n", "method", "mean mesh",
+                "min mesh", "max mesh", "pair max");
+  o << head;
+  for (const char* method : {"potential_energy", "kuang_yang"}) {
+    std::shared_ptr<const PairStiffnessModel> owner;
+    try {
+      const PairStiffnessFn k = internal::MakePairStiffness(p, method, &owner);
+      const MeshStiffnessSummary m = SummarizeMeshStiffness(path, k);
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "  %-18s %12s %12s %12s %12s\n", method,
+                    per_width(m.mean_n_per_m).c_str(), per_width(m.min_n_per_m).c_str(),
+                    per_width(m.max_n_per_m).c_str(), per_width(m.single_pair_max_n_per_m).c_str());
+      o << buf;
+    } catch (const InputError& e) {
+      o << "  " << method << ": not applicable: " << e.problems().front().rule << "\n";
+    }
+  }
+  try {
+    const IsoStiffness iso =
+        IsoMethodB(PinionBlank(p), WheelBlank(p), p.line(Flank::kDrive).contact_ratio,
+                   p.spec().helix_angle_rad);
+    o << "  iso (6336-1 B)     c' = " << Fmt("%.3f", iso.c_prime_n_per_mm_um)
+      << ", c_gamma_alpha = " << Fmt("%.3f", iso.c_gamma_alpha_n_per_mm_um) << "\n";
+  } catch (const InputError& e) {
+    o << "  iso: not applicable: " << e.problems().front().rule << "\n";
+  }
+  o << "  load sharing: " << ToString(c.load_sharing)
+    << (c.load_sharing == LoadSharing::kStiffness ? " (" + c.mesh_stiffness + ")" : std::string())
+    << "\n";
+}
+
+void WriteCsv(const std::string& file, const internal::GearCase& c, int points) {
+  std::ofstream out(file);
+  if (!out)
+    throw InputError(InputProblem{"", 0, "--csv", file, "cannot be written", "a writable path"});
+  out << "s_m,t_s,rho1_m,rho2_m,R_m,u1_m_s,u2_m_s,um_m_s,SRR,v_slide_m_s,k_pair_n_per_m,"
+         "k_mesh_n_per_m,share,w_n_per_m,r1_m,r2_m,pairs_in_contact\n";
+  out.precision(10);
+  for (const MeshCycleRow& r : internal::GearCaseCycle(c, points)) {
+    const ContactPoint& q = r.contact;
+    out << q.s_m << ',' << q.time_s << ',' << q.rho1_m << ',' << q.rho2_m << ','
+        << q.reduced_radius_m << ',' << q.u1_m_s << ',' << q.u2_m_s << ',' << q.um_m_s << ','
+        << q.srr << ',' << q.sliding_m_s << ',' << r.pair_stiffness_n_per_m << ','
+        << r.mesh_stiffness_n_per_m << ',' << r.share << ',' << r.load_n_per_m << ',' << q.r1_m
+        << ',' << q.r2_m << ',' << q.pairs_in_contact << '\n';
+  }
+}
+
+void WriteProfile(const std::string& file, const GearPair& pair) {
+  std::ofstream out(file);
+  if (!out)
+    throw InputError(
+        InputProblem{"", 0, "--profile", file, "cannot be written", "a writable path"});
+  out << "gear,flank,x_m,y_m\n";
+  out.precision(12);
+  for (const ProfileCurve& curve : ToothProfile(pair))
+    for (const ProfilePoint& p : curve.points)
+      out << curve.gear << ',' << curve.flank << ',' << p.x_m << ',' << p.y_m << '\n';
+}
+
+}  // namespace
+
+Command AddGearCommand(CLI::App& app) {
+  struct Args {
+    std::string case_file, csv, profile;
+    int points = 201;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* sub = app.add_subcommand(
+      "gear",
+      "Report the gear pair of a case: geometry, contact ratios, path of contact, "
+      "load, Hertz scales, mesh stiffness");
+  sub->add_option("CASE", args->case_file, "Case file with [gear] and [operating]")->required();
+  sub->add_option("--csv", args->csv,
+                  "Write the along-path table (s, t, rho1, rho2, R, u1, u2, um, SRR, sliding, "
+                  "k_pair, k_mesh, share, w; SI units in the header)");
+  sub->add_option("--profile", args->profile, "Write tooth profile points (gear, flank, x_m, y_m)");
+  sub->add_option("--points", args->points, "Samples from A to E in --csv (>= 2)")
+      ->check(CLI::Range(2, 1000000));
+  return {sub, [args]() {
+            internal::Document doc = internal::ReadCaseDocument(args->case_file);
+            std::optional<internal::GearCase> c = internal::ReadGearCase(doc);
+            doc.ThrowIfProblems();
+            std::ostringstream o;
+            o << "tehl gear: " << args->case_file << "\n";
+            Geometry(o, *c);
+            Path(o, *c);
+            Stiffness(o, *c);
+            for (const auto& w : c->warnings) o << "warning: " << w.ToString() << "\n";
+            std::cout << o.str();
+            if (!args->csv.empty()) WriteCsv(args->csv, *c, args->points);
+            if (!args->profile.empty()) WriteProfile(args->profile, *c->pair);
+            return kExitOk;
+          }};
+}
+
+}  // namespace tehl::cli

@@ -1,0 +1,162 @@
+#include "scene/gear_case.hpp"
+
+#include <cmath>
+
+#include "tehl/error.hpp"
+#include "tehl/gear/path_of_contact.hpp"
+#include "tehl/gear/tooth_blank.hpp"
+#include "tehl/units.hpp"
+
+namespace tehl::internal {
+namespace {
+
+// "gear.pinion.teeth" -> ("gear.pinion", "teeth").
+std::pair<std::string, std::string> SplitKey(const std::string& full) {
+  const auto dot = full.rfind('.');
+  if (dot == std::string::npos) return {full, ""};
+  return {full.substr(0, dot), full.substr(dot + 1)};
+}
+
+void AddProblems(Document& doc, const InputError& e) {
+  for (const auto& p : e.problems()) {
+    const auto [section, key] = SplitKey(p.key);
+    doc.Problem(section, key, p.rule, p.allowed);
+  }
+}
+
+bool GearKeysInError(const Document& doc) {
+  for (const auto& p : doc.problems())
+    if (p.key.rfind("gear", 0) == 0 || p.key.rfind("[gear", 0) == 0 ||
+        p.key.rfind("operating", 0) == 0 || p.key.rfind("[operating", 0) == 0)
+      return true;
+  return false;
+}
+
+GearMemberSpec ReadMember(const Document& doc, const std::string& section) {
+  GearMemberSpec m;
+  m.teeth = static_cast<int>(doc.Int(section, "teeth"));
+  m.profile_shift = doc.Real(section, "profile_shift");
+  if (doc.Given(section, "tip_radius_m")) m.tip_radius_m = doc.Real(section, "tip_radius_m");
+  m.material.youngs_modulus_pa = doc.Real(section, "youngs_modulus_pa");
+  m.material.poisson_ratio = doc.Real(section, "poisson_ratio");
+  m.material.density_kg_m3 = doc.Real(section, "density_kg_m3");
+  m.material.conductivity_w_mk = doc.Real(section, "conductivity_w_mk");
+  m.material.heat_capacity_j_kgk = doc.Real(section, "heat_capacity_j_kgk");
+  return m;
+}
+
+GearPairSpec ReadSpec(const Document& doc) {
+  GearPairSpec s;
+  s.pinion = ReadMember(doc, "gear.pinion");
+  s.wheel = ReadMember(doc, "gear.wheel");
+  s.module_m = doc.Real("gear", "module_m");
+  s.face_width_m = doc.Real("gear", "face_width_m");
+  s.drive_pressure_angle_rad = DegToRad(doc.Real("gear", "pressure_angle_deg"));
+  s.coast_pressure_angle_rad = doc.Given("gear", "coast_pressure_angle_deg")
+                                   ? DegToRad(doc.Real("gear", "coast_pressure_angle_deg"))
+                                   : s.drive_pressure_angle_rad;
+  s.helix_angle_rad = DegToRad(doc.Real("gear", "helix_angle_deg"));
+  if (doc.Given("gear", "center_distance_m"))
+    s.center_distance_m = doc.Real("gear", "center_distance_m");
+  s.internal = doc.Bool("gear", "internal");
+  s.addendum_coefficient = doc.Real("gear", "addendum_coefficient");
+  s.dedendum_coefficient = doc.Real("gear", "dedendum_coefficient");
+  s.root_fillet_coefficient = doc.Real("gear", "root_fillet_coefficient");
+  s.allow_undercut = doc.Bool("gear", "allow_undercut");
+  return s;
+}
+
+}  // namespace
+
+double GearCase::ReducedModulusPa() const {
+  return ReducedModulus(spec.pinion.material.youngs_modulus_pa, spec.pinion.material.poisson_ratio,
+                        spec.wheel.material.youngs_modulus_pa, spec.wheel.material.poisson_ratio);
+}
+
+PairStiffnessFn MakePairStiffness(const GearPair& pair,
+                                  const std::string& method,
+                                  std::shared_ptr<const PairStiffnessModel>* owner) {
+  if (method == "iso") {
+    const IsoStiffness iso =
+        IsoMethodB(PinionBlank(pair), WheelBlank(pair), pair.line(Flank::kDrive).contact_ratio,
+                   pair.spec().helix_angle_rad);
+    // c' [N/(mm um)] per mm of face width -> [N/m] for the whole width.
+    const double k = iso.c_prime_n_per_mm_um * 1e9 * pair.spec().face_width_m;
+    owner->reset();
+    return [k](double, double) { return k; };
+  }
+  std::shared_ptr<const PairStiffnessModel> model =
+      MakePairStiffnessModel(method, PinionBlank(pair), WheelBlank(pair));
+  *owner = model;
+  const PairStiffnessModel* raw = model.get();
+  return [raw](double r1, double r2) { return raw->PairStiffness(r1, r2); };
+}
+
+std::optional<GearCase> ReadGearCase(Document& doc) {
+  const bool gear =
+      doc.HasSection("gear") || doc.HasSection("gear.pinion") || doc.HasSection("gear.wheel");
+  if (!gear) {
+    doc.Problem("gear", "", "this command needs a gear case",
+                "a case with [gear], [gear.pinion], [gear.wheel] and [operating]");
+    return std::nullopt;
+  }
+  if (GearKeysInError(doc)) return std::nullopt;
+
+  GearCase c;
+  c.spec = ReadSpec(doc);
+  c.mesh_stiffness = doc.String("gear", "mesh_stiffness");
+  c.load_sharing =
+      LoadSharingFromString(doc.String("gear", "load_sharing")).value_or(LoadSharing::kStiffness);
+  const double w1 = doc.Given("operating", "pinion_speed_rpm")
+                        ? RpmToRadPerS(doc.Real("operating", "pinion_speed_rpm"))
+                        : doc.Real("operating", "pinion_speed_rad_s");
+  c.operating.pinion_speed_rad_s = w1;
+  if (doc.Given("operating", "power_w")) {
+    c.power_w = doc.Real("operating", "power_w");
+    c.operating.pinion_torque_nm = TorqueFromPower(c.power_w, w1);
+  } else {
+    c.operating.pinion_torque_nm = doc.Real("operating", "pinion_torque_nm");
+    c.power_w = c.operating.pinion_torque_nm * w1;
+  }
+
+  try {
+    c.pair.emplace(c.spec);
+  } catch (const InputError& e) {
+    AddProblems(doc, e);
+    return std::nullopt;
+  }
+  const GearPair& pair = *c.pair;
+  bool geometry_ok = true;
+  for (auto& p : CheckGeometry(pair)) {
+    if (p.warning) {
+      c.warnings.push_back(std::move(p));
+    } else {
+      doc.Problem(p.section, p.key, p.rule, p.allowed);
+      geometry_ok = false;
+    }
+  }
+  if (!geometry_ok) return c;
+
+  const double eps = pair.line(Flank::kDrive).contact_ratio;
+  if (c.load_sharing == LoadSharing::kLinear && eps >= 2.0)
+    doc.Problem("gear", "load_sharing",
+                "the linear ramp needs 1 <= eps_alpha < 2; this pair has eps_alpha = " +
+                    std::to_string(eps),
+                "load_sharing = \"stiffness\"");
+  try {
+    c.pair_stiffness = MakePairStiffness(pair, c.mesh_stiffness, &c.model);
+  } catch (const InputError& e) {
+    AddProblems(doc, e);
+  }
+  return c;
+}
+
+std::vector<MeshCycleRow> GearCaseCycle(const GearCase& c, int points) {
+  const PathOfContact path(*c.pair, c.operating.pinion_speed_rad_s);
+  MeshCycleOptions o;
+  o.points = points;
+  o.load_sharing = c.load_sharing;
+  return MeshCycle(path, NominalToothLoad(*c.pair, c.operating), o, c.pair_stiffness);
+}
+
+}  // namespace tehl::internal

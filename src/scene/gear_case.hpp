@@ -1,0 +1,54 @@
+// Where the gear layer meets the case file: the [gear], [gear.pinion], [gear.wheel] and
+// [operating] sections of a case Document turned into the gear structs and the operating
+// point, with every geometric problem (interference, undercut without allow_undercut,
+// eps_alpha < 1, pointed tip, overlapping or impossible centre distance, a stiffness method
+// outside its range, linear load sharing with eps_alpha >= 2) added to the Document at its
+// key, so the user sees file:line and what to change. Private to src/.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "base/schema.hpp"
+#include "tehl/gear/gear_pair.hpp"
+#include "tehl/gear/geometry_checks.hpp"
+#include "tehl/gear/load_sharing.hpp"
+#include "tehl/gear/mesh_cycle.hpp"
+#include "tehl/gear/mesh_stiffness.hpp"
+#include "tehl/gear/operating_point.hpp"
+
+namespace tehl::internal {
+
+struct GearCase {
+  GearPairSpec spec;
+  std::optional<GearPair> pair;  // empty when the spec is unusable
+  OperatingPoint operating;      // pinion speed and torque
+  double power_w = 0;            // P = T1 w1 [W]
+  LoadSharing load_sharing = LoadSharing::kStiffness;
+  std::string mesh_stiffness;  // "potential_energy" | "kuang_yang" | "iso"
+  // The pair stiffness of mesh_stiffness; for "iso" a constant c' b (ISO 6336-1 method B
+  // gives no variation along the path). Empty when the method could not be built.
+  PairStiffnessFn pair_stiffness;
+  std::shared_ptr<const PairStiffnessModel> model;  // owner behind pair_stiffness
+  std::vector<GeometryProblem> warnings;            // geometry warnings, for the report
+
+  double ReducedModulusPa() const;  // E' of the two gear materials [Pa]
+};
+
+// Builds the gear case from a document read by ReadCaseDocument. Problems go into `doc`
+// (call doc.ThrowIfProblems() afterwards). Returns nothing when the document has no gear
+// pair or its gear keys are already in error.
+std::optional<GearCase> ReadGearCase(Document& doc);
+
+// The stiffness of one pair by `method` for this pair; throws InputError (key
+// gear.mesh_stiffness) when the method does not apply. "iso": constant c' b.
+PairStiffnessFn MakePairStiffness(const GearPair& pair,
+                                  const std::string& method,
+                                  std::shared_ptr<const PairStiffnessModel>* owner);
+
+// The mesh cycle of the case (drive flank), `points` samples from A to E.
+std::vector<MeshCycleRow> GearCaseCycle(const GearCase& c, int points);
+
+}  // namespace tehl::internal

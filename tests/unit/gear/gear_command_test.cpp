@@ -1,0 +1,181 @@
+// `tehl gear`: the report, the along-path CSV, the profile CSV, and exit code 2 with a
+// message that says what to change for bad geometry (cases written into a temp folder).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string Slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class GearCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("tehl_gear_cli_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  Result Tehl(const std::string& args) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string cmd = std::string("cd ") + TEHL_SOURCE_DIR + " && " + TEHL_BINARY + " " +
+                            args + " > " + out.string() + " 2> " + err.string();
+    const int status = std::system(cmd.c_str());
+    Result r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = Slurp(out);
+    r.err = Slurp(err);
+    return r;
+  }
+
+  // A case file in the temp folder: the seed 004 pair with `gear`, `pinion` and `wheel`
+  // lines added to their sections.
+  fs::path Case(const std::string& name,
+                const std::string& gear,
+                const std::string& pinion,
+                const std::string& wheel = "") {
+    const fs::path p = dir_ / name;
+    std::ofstream(p) << "[gear]\nmodule_m = 0.002\nface_width_m = 0.025\n"
+                     << gear << "[gear.pinion]\nteeth = 35\n"
+                     << pinion << "[gear.wheel]\nteeth = 105\n"
+                     << wheel
+                     << "[operating]\npinion_speed_rpm = 1000.0\npower_w = 10000.0\n"
+                        "[lubricant]\nname = \"sae40\"\n[numerics]\ngrid_points = 257\n";
+    return p;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(GearCommand, Seed004ReportHasTheValidationNumbers) {
+  // VALIDATION.md section 5: eps_alpha = 1.7722; A..E = 6.486 / 11.046 / 11.971 / 12.390 /
+  // 16.950 mm from T1; w = 116.14 kN/m; R = 8.978 mm, um = 1.254 m/s, p_H ~ 522 MPa at C.
+  const Result r = Tehl("gear cases/seed004_sae40.toml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* s : {"eps_alpha = 1.7722", "A 6.486  B 11.046  C 11.971  D 12.390  E 16.950",
+                        "AE 10.464", "w = F_bt / b = 116.139 kN/m", "R = 8.978 mm, um = 1.2536 m/s",
+                        "p_H = 521.9 MPa", "potential_energy", "c_gamma_alpha"})
+    EXPECT_NE(r.out.find(s), std::string::npos) << s << "\n" << r.out;
+}
+
+TEST_F(GearCommand, CsvHasUnitsInTheHeaderAndOneRowPerSample) {
+  const fs::path csv = dir_ / "cycle.csv";
+  const Result r = Tehl("gear cases/fzg_c.toml --points 11 --csv " + csv.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream in(csv);
+  std::string header, line;
+  std::getline(in, header);
+  EXPECT_EQ(header.rfind("s_m,t_s,rho1_m,rho2_m,R_m,u1_m_s,u2_m_s,um_m_s,SRR,v_slide_m_s,"
+                         "k_pair_n_per_m,k_mesh_n_per_m,share,w_n_per_m",
+                         0),
+            0u)
+      << header;
+  int rows = 0;
+  while (std::getline(in, line)) ++rows;
+  EXPECT_EQ(rows, 15);  // 11 samples + both sides of B and D
+}
+
+TEST_F(GearCommand, ProfileCsvListsBothGears) {
+  const fs::path csv = dir_ / "profile.csv";
+  const Result r = Tehl("gear cases/asymmetric_35_20.toml --profile " + csv.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string text = Slurp(csv);
+  EXPECT_EQ(text.rfind("gear,flank,x_m,y_m\n", 0), 0u);
+  for (const char* s : {"pinion,drive,", "pinion,coast,", "wheel,drive,", "wheel,tip,"})
+    EXPECT_NE(text.find(s), std::string::npos) << s;
+}
+
+TEST_F(GearCommand, EveryCaseOfTheRepositoryIsValid) {
+  const Result r = Tehl(
+      "case --check cases/seed004_sae40.toml cases/seed004_sae90.toml "
+      "cases/fzg_c.toml cases/asymmetric_35_20.toml");
+  EXPECT_EQ(r.code, 0) << r.err;
+  for (const char* c : {"seed004_sae90", "fzg_c", "asymmetric_35_20"}) {
+    const Result g = Tehl(std::string("gear cases/") + c + ".toml");
+    EXPECT_EQ(g.code, 0) << c << ": " << g.err;
+  }
+}
+
+TEST_F(GearCommand, UndercutPinionExitsTwoSayingWhatToChange) {
+  const fs::path p = Case("undercut.toml", "", "profile_shift = 0.0\n");
+  std::string text = Slurp(p);
+  text.replace(text.find("teeth = 35"), 10, "teeth = 14");
+  text.replace(text.find("teeth = 105"), 11, "teeth = 20");
+  std::ofstream(p) << text;
+  const Result r = Tehl("gear " + p.string());
+  EXPECT_EQ(r.code, 2);
+  // x_min = 1 - 14 sin^2(20)/2 = 0.18115 (seed 000 Table 4.9 rule); line 6 holds the shift.
+  EXPECT_NE(r.err.find(p.string() + ":6: gear.pinion.profile_shift = 0.0: the pinion is undercut"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("profile_shift >= 0.1812"), std::string::npos) << r.err;
+}
+
+TEST_F(GearCommand, PointedToothExitsTwo) {
+  // 12 teeth with x = 0.9: the flanks meet below r + m (1 + x) (gear_pair_test).
+  const fs::path p = Case("pointed.toml", "", "profile_shift = 0.9\n");
+  std::string text = Slurp(p);
+  text.replace(text.find("teeth = 35"), 10, "teeth = 12");
+  std::ofstream(p) << text;
+  const Result r = Tehl("gear " + p.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("gear.pinion.profile_shift = 0.9: the pinion tooth is pointed"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("tip_radius_m below"), std::string::npos) << r.err;
+}
+
+TEST_F(GearCommand, ImpossibleCenterDistanceExitsTwo) {
+  const Result r = Tehl("gear " + Case("a.toml", "center_distance_m = 0.130\n", "").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find(":4: gear.center_distance_m = 0.13: a = 130.0000 mm is below the sum of "
+                       "the base radii"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("center_distance_m >= 0.140000"), std::string::npos) << r.err;
+}
+
+TEST_F(GearCommand, InterferenceAndLowContactRatioExitTwo) {
+  const Result r =
+      Tehl("gear " +
+           Case("eps.toml", "", "tip_radius_m = 0.0355\n", "tip_radius_m = 0.1055\n").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("gear.pressure_angle_deg"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("< 1: the mesh is not continuous"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("eps_alpha >= 1.2"), std::string::npos) << r.err;
+}
+
+TEST_F(GearCommand, AsymmetricRackThatDoesNotFitExitsTwo) {
+  const Result r = Tehl("gear " + Case("rack.toml",
+                                       "pressure_angle_deg = 35.0\n"
+                                       "coast_pressure_angle_deg = 20.0\n",
+                                       "")
+                                      .string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("gear.root_fillet_coefficient = 0.38: the rack tip radius rho_fP = "
+                       "0.3800 m_n does not fit"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("root_fillet_coefficient <= 0.1971"), std::string::npos) << r.err;
+}
+
+}  // namespace
