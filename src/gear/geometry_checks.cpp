@@ -170,9 +170,12 @@ class Checker {
       Error("gear.wheel", TipKey(1),
             "involute interference" + FlankLabel(f) + ": the wheel tip reaches " + Mm(-l.a_m) +
                 " beyond the tangent point T1 of the pinion's base circle",
-            "a wheel tip radius at most " +
-                Mm(s_.internal ? 0 : std::hypot(l.wheel_base_radius_m, l.tangent_length_m)) +
-                ", a positive pinion profile_shift, or more pinion teeth");
+            // The limit circle through T1: sqrt(r_b2^2 + T1T2^2) (seed 000 eq. 2.17); a ring's
+            // tip (its inner circle) must lie outside it, an external wheel's inside.
+            (s_.internal ? "a ring tip radius of at least " : "a wheel tip radius at most ") +
+                Mm(std::hypot(l.wheel_base_radius_m, l.tangent_length_m)) +
+                (s_.internal ? " (a positive ring profile_shift)"
+                             : ", a positive pinion profile_shift, or more pinion teeth"));
     } else {
       const double r_sap = std::hypot(l.pinion_base_radius_m, l.a_m);
       const double r_form = p.flank(f).form_radius_m;
