@@ -131,6 +131,17 @@ double GearGeometry::ThicknessAtRadius(double r) const {
   return 2.0 * kPi * r / teeth - r * (space_ref / pitch_radius_m + inv_ref - inv_r);
 }
 
+double TipRadiusForTopLand(const GearGeometry& g, double land) {
+  double lo = std::max(g.drive.base_radius_m, g.coast.base_radius_m);
+  double hi = g.internal ? lo : g.pointed_tip_radius_m;
+  if (g.ThicknessAtRadius(lo) <= land) return lo;
+  for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (g.ThicknessAtRadius(mid) > land ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 GearPair::GearPair(const GearPairSpec& spec) : spec_(spec) {
   RequireValidSpec(spec_);
   const auto& s = spec_;

@@ -148,13 +148,17 @@ class Checker {
                 (g.internal ? std::string()
                             : "; the flanks meet at r = " + Mm(g.pointed_tip_radius_m)),
             g.internal ? "a larger ring tip radius (positive profile_shift)"
-                       : "tip_radius_m below " + Mm(g.pointed_tip_radius_m) +
-                             ", or a smaller profile_shift");
+                       : "tip_radius_m below " + Mm(g.pointed_tip_radius_m) + " (" +
+                             Mm(TipRadiusForTopLand(g, 0.2 * s_.module_m)) +
+                             " leaves a top land of 0.2 m_n), or a smaller profile_shift");
     } else if (land < 0.2 * s_.module_m) {
       Warning(sec, TipKey(i),
               std::string("thin top land on the ") + Name(i) + ": " + Mm(land) +
                   " < 0.2 m_n = " + Mm(0.2 * s_.module_m),
-              "a smaller tip radius or profile shift");
+              g.internal
+                  ? std::string("a larger ring tip radius (positive profile_shift)")
+                  : "a tip radius of at most " + Mm(TipRadiusForTopLand(g, 0.2 * s_.module_m)) +
+                        " or a smaller profile shift");
     }
   }
 

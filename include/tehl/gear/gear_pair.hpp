@@ -105,6 +105,12 @@ struct GearGeometry {
   double ThicknessAtRadius(double radius_m) const;
 };
 
+// Tip radius at which an external tooth has the top land `top_land_m` (arc thickness at the
+// tip), by bisection on s(r) between the larger base radius and the pointed-tip radius
+// (Kapelevich's step 2, seed 000 eqs. 3.29-3.33, read as top land = D_o (inv nu_d + inv nu_c
+// - inv phi_od - inv phi_oc)/2). top_land_m in [0, s(max r_b)) [m] -> [m].
+double TipRadiusForTopLand(const GearGeometry& gear, double top_land_m);
+
 // The line of action of one flank pair (both drive flanks, or both coast flanks).
 // Positions are measured from T1, the tangent point on the pinion's base circle, towards
 // T2 (external) or away from T2 (internal, T2 lies behind T1). VALIDATION.md section 5.

@@ -134,5 +134,16 @@ TEST(AsymmetricGear, ShiftedAsymmetricPairMeshesWithoutBacklash) {
   EXPECT_GT(p.center_distance_m(), 0.140);
 }
 
+TEST(AsymmetricGear, TipRadiusForATopLandInvertsTheThickness) {
+  // Kapelevich step 2 by bisection: the seed 000 35/20 pinion has a top land s_a at
+  // R_o = 2.375 in; asking for that land gives R_o back, asking for 0 gives the pointed tip.
+  const GearPair p(testing::Seed000Spec(35, 20));
+  const GearGeometry& g = p.pinion();
+  EXPECT_NEAR(TipRadiusForTopLand(g, g.tip_thickness_m), 2.375 * 25.4e-3, 1e-12);
+  EXPECT_NEAR(TipRadiusForTopLand(g, 0.0), g.pointed_tip_radius_m, 1e-12);
+  const double r = TipRadiusForTopLand(g, 0.2 * 3.175e-3);
+  EXPECT_NEAR(g.ThicknessAtRadius(r), 0.2 * 3.175e-3, 1e-13);
+}
+
 }  // namespace
 }  // namespace tehl

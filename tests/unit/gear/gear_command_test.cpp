@@ -107,9 +107,9 @@ TEST_F(GearCommand, ProfileCsvListsBothGears) {
 TEST_F(GearCommand, EveryCaseOfTheRepositoryIsValid) {
   const Result r = Tehl(
       "case --check cases/seed004_sae40.toml cases/seed004_sae90.toml "
-      "cases/fzg_c.toml cases/asymmetric_35_20.toml");
+      "cases/fzg_c.toml cases/asymmetric_35_20.toml cases/steel_62_62.toml");
   EXPECT_EQ(r.code, 0) << r.err;
-  for (const char* c : {"seed004_sae90", "fzg_c", "asymmetric_35_20"}) {
+  for (const char* c : {"seed004_sae90", "fzg_c", "asymmetric_35_20", "steel_62_62"}) {
     const Result g = Tehl(std::string("gear cases/") + c + ".toml");
     EXPECT_EQ(g.code, 0) << c << ": " << g.err;
   }
