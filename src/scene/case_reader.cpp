@@ -100,7 +100,7 @@ Document ReadCaseDocument(const std::string& path) {
       doc.Problem("lubricant", "name", "no such lubricant file",
                   "sae40, sae90, reference_z068, or a path to a lubricant .toml file");
   }
-  if (doc.Int("numerics", "grid_points") % 2 == 0)
+  if (doc.Has("numerics", "grid_points") && doc.Int("numerics", "grid_points") % 2 == 0)
     doc.Problem("numerics", "grid_points", "must be odd, so a node sits at x = 0",
                 "an odd integer >= 17, e.g. 257, 513, 1025");
   return doc;

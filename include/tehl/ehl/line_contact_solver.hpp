@@ -53,7 +53,7 @@ struct FilmState {
   double travel1_m = 0;      // integral of u1 dt since t = 0: how far surface 1 moved [m]
   double travel2_m = 0;      // integral of u2 dt [m]
   bool valid() const { return p_pa.size() > 0 && p_pa.size() == h_m.size(); }
-  double MinFilm() const;      // h_min [m]
+  double MinFilm() const;      // h_min, parabola through the smallest node [m]
   double CentralFilm(const UniformGrid& g) const;  // h at x = 0 (interpolated) [m]
   double MaxPressure() const;  // p_max [Pa]
 };
@@ -62,7 +62,8 @@ class LineContactSolver {
  public:
   struct Options {
     LinearSolverKind linear_solver = LinearSolverKind::kAuto;
-    int dense_max_nodes = 1025;       // kAuto uses dense LU up to this many nodes [-]
+    int dense_max_nodes = 2049;       // kAuto uses dense LU up to this many nodes [-]
+                                      // (measured: docs/performance.md)
     int upwind_order = 2;             // Couette-term upwinding: 1 or 2 [-]
     TimeScheme time_scheme = TimeScheme::kBdf2;
     double tolerance = 1e-8;          // stop when the scaled residual max-norm < this [-]
@@ -71,6 +72,7 @@ class LineContactSolver {
     int gmres_max_iterations = 400;   // per Newton step [-]
     int preconditioner_band = 24;     // half-band of the elastic matrix in the preconditioner [-]
     int max_continuation_stages = 12; // load / pressure-viscosity continuation stages [-]
+    int coarse_grid_nodes = 129;      // grid sequencing halves the grid down to this [-]
     double min_step_fraction = 1.0 / 1024;  // smallest line-search step [-]
     std::vector<std::string> Validate() const;  // every violated rule; empty = valid
   };
@@ -116,8 +118,9 @@ class LineContactSolver {
   // A first guess: Hertz pressure (scaled onto the grid) and h0 from the Moes film fit.
   FilmState InitialGuess(const ContactConditions& c) const;
 
-  // Steady solve. state: the initial guess on entry when valid() (else InitialGuess), the
-  // solution on exit. On failure the state holds the best iterate found and the Summary
+  // Steady solve. state: the initial guess on entry when valid() (else the interpolated
+  // solution on a grid of half the cells, recursively, down to the InitialGuess on a grid of
+  // about coarse_grid_nodes), the solution on exit. On failure the state holds the best iterate found and the Summary
   // says why; it never holds NaN.
   Summary SolveSteady(const ContactConditions& c, FilmState* state);
 
