@@ -262,7 +262,11 @@ class DocumentReader {
         Add(0, "[" + sec.name + "]", "", "required section is missing",
             "a [" + sec.name + "] table: " + sec.meaning);
       }
-      if (present || sec.required) FillDefaults(sec);
+      // An absent optional section with no required key is all defaults: fill it, so
+      // [numerics] or [effects] may be left out entirely.
+      bool all_default = true;
+      for (const auto& k : sec.keys) all_default = all_default && !k.required;
+      if (present || sec.required || all_default) FillDefaults(sec);
     }
   }
 
@@ -554,7 +558,9 @@ std::string Document::ToToml() const {
     << "\n";
   if (!schema_) return o.str();
   for (const auto& sec : schema_->sections) {
-    if (!sec.name.empty() && !HasSection(sec.name) && !sec.required) continue;
+    bool any = false;
+    for (const auto& k : sec.keys) any = any || Get(sec.name, k.name);
+    if (!sec.name.empty() && !HasSection(sec.name) && !sec.required && !any) continue;
     if (!sec.name.empty()) o << "\n[" << sec.name << "]\n";
     for (const auto& k : sec.keys) {
       const Entry* e = Get(sec.name, k.name);

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
       AddCaseCommand(app),
       AddLubricantCommand(app),
       AddGearCommand(app),
+      AddRunCommand(app),
   };
   try {
     app.parse(argc, argv);

@@ -2,6 +2,7 @@
 list(APPEND TEHL_CLI_SOURCES
   src/cli/main.cpp
   src/cli/case_command.cpp
+  src/cli/run_command.cpp
   src/cli/lubricant_command.cpp
   src/cli/gear_command.cpp
 )

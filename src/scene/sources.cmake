@@ -2,5 +2,7 @@
 list(APPEND TEHL_SOURCES
   src/scene/case_schema.cpp
   src/scene/case_reader.cpp
+  src/scene/film_case.cpp
+  src/scene/contact_scene.cpp
   src/scene/gear_case.cpp
 )

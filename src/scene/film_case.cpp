@@ -1,0 +1,82 @@
+#include "scene/film_case.hpp"
+
+#include <filesystem>
+
+#include "scene/case_reader.hpp"
+#include "tehl/error.hpp"
+
+namespace tehl::internal {
+namespace {
+
+std::shared_ptr<const SurfaceShape> ReadSurface(Document& doc, const std::string& section) {
+  const std::string kind = doc.String(section, "roughness");
+  if (kind == "sinusoidal" && doc.Given(section, "wavelength_m"))
+    return std::make_shared<SinusoidalWaviness>(doc.Real(section, "amplitude_m"),
+                                                doc.Real(section, "wavelength_m"),
+                                                doc.Real(section, "phase_rad"));
+  if (kind == "profile" && !doc.String(section, "profile_file").empty()) {
+    std::filesystem::path file(doc.String(section, "profile_file"));
+    if (file.is_relative()) file = std::filesystem::path(doc.path()).parent_path() / file;
+    try {
+      return std::make_shared<MeasuredProfile>(MeasuredProfile::ReadFile(file.string()));
+    } catch (const InputError& e) {
+      doc.Problem(section, "profile_file", "the profile file is not usable: " +
+                  std::string(e.what()), "a two-column text file (x [m], height [m])");
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+FilmCase ReadFilmCase(Document& doc) {
+  FilmCase f;
+  const std::string name = doc.String("lubricant", "name");
+  const std::string path = ResolveLubricantPath(name, doc.path());
+  if (!path.empty()) {
+    try {
+      f.lubricant = std::make_shared<const Lubricant>(Lubricant::FromFile(path));
+    } catch (const InputError& e) {
+      for (const auto& p : e.problems())
+        doc.Problem("lubricant", "name", "the lubricant file has a problem: " + p.ToString(),
+                    "a valid lubricant file");
+    }
+  }
+  f.inlet_temperature_k = doc.Given("lubricant", "inlet_temperature_k")
+                              ? doc.Real("lubricant", "inlet_temperature_k")
+                              : (f.lubricant ? f.lubricant->reference_temperature_k() : 0.0);
+
+  f.effects.elastic = doc.Bool("effects", "elastic");
+  f.effects.piezoviscous = doc.Bool("effects", "piezoviscous");
+  f.effects.compressible = doc.Bool("effects", "compressible");
+  f.effects.transient = doc.Bool("effects", "transient");
+  f.effects.roughness = doc.Bool("effects", "roughness");
+  for (const char* effect : {"thermal", "dynamic_load", "non_newtonian"})
+    if (doc.Bool("effects", effect))
+      doc.Problem("effects", effect, "this effect is not available in this version of tehl",
+                  std::string(effect) + " = false");
+
+  f.grid_points = static_cast<int>(doc.Int("numerics", "grid_points"));
+  f.x_start_b = doc.Real("numerics", "x_start_b");
+  f.x_end_b = doc.Real("numerics", "x_end_b");
+  auto& o = f.options;
+  o.upwind_order = static_cast<int>(doc.Int("numerics", "upwind_order"));
+  o.time_scheme = TimeSchemeFromString(doc.String("numerics", "time_scheme"));
+  o.linear_solver = LinearSolverKindFromString(doc.String("numerics", "linear_solver"));
+  o.tolerance = doc.Real("numerics", "newton_tolerance");
+  o.max_iterations = static_cast<int>(doc.Int("numerics", "max_newton_iterations"));
+  if (o.tolerance >= 1.0)
+    doc.Problem("numerics", "newton_tolerance", "must be < 1", "a small positive number, e.g. 1e-8");
+
+  if (f.effects.roughness) {
+    f.surface1 = ReadSurface(doc, "surfaces.surface1");
+    f.surface2 = ReadSurface(doc, "surfaces.surface2");
+    if (!f.surface1 && !f.surface2)
+      doc.Problem("effects", "roughness", "roughness is on but both surfaces are smooth",
+                  "a [surfaces.surface1] or [surfaces.surface2] with roughness = \"sinusoidal\" "
+                  "or \"profile\", or roughness = false");
+  }
+  return f;
+}
+
+}  // namespace tehl::internal
