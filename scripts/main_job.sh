@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
-# Installs, builds and runs the main job on the seed 004 case.
+# Installs, builds and runs the main job: the seed 004 gear pair (SAE 40, 10 kW at
+# 1000 rpm) -- its gear report and along-path table -- and a film solve of the disc case.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
-./build/tehl gear cases/seed004_sae40.toml
+mkdir -p results
+./build/tehl gear cases/seed004_sae40.toml --csv results/seed004_sae40_path.csv
+./build/tehl run cases/disc_steady.toml
