@@ -1,0 +1,161 @@
+// Cost of the isothermal EHL line-contact solver (docs/performance.md): steady solves at the
+// Moes point M = 20, L = 10 with the reference oil (VALIDATION.md section 3), per grid size and
+// linear solver, cold (no guess: grid sequencing inside SolveSteady) and warm (re-solve from
+// the converged state after the load grew by 1 %, what a mesh cycle mostly does); the one-off
+// cost of the elastic-deflection FFT plans; and one FFT convolution for the ratio
+// (one Newton iteration) / (one FFT convolution).
+//   ./ehl_bench --benchmark_counters_tabular=true
+// Every solve is expensive (up to a minute for dense LU at n = 4097), so each benchmark runs
+// exactly one iteration.
+//
+// Peak memory: before the solve the kernel's peak-RSS mark is reset to the current RSS by
+// writing "5" to /proc/self/clear_refs (Linux >= 4.0); after it, VmHWM - VmRSS(before) from
+// /proc/self/status is the extra resident memory the solve needed at its peak (the solver
+// object built before the reset is not included). Where clear_refs is not writable the counter
+// is -1.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "support/test_lubricants.hpp"
+#include "tehl/ehl/elastic_deflection.hpp"
+#include "tehl/ehl/line_contact_solver.hpp"
+#include "tehl/units.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr double kEPrime = 226.4e9;  // steel-steel E' [Pa]
+constexpr double kRadius = 0.01;     // R [m]
+constexpr double kEta0 = 0.04;       // reference oil eta0 [Pa s] (VALIDATION.md section 3)
+constexpr double kMoesM = 20.0, kMoesL = 10.0;
+
+// Moes M = W (2U)^-1/2, L = G (2U)^1/4 with U = eta0 um/(E' R), W = w/(E' R), G = alpha E'
+// (Moes 1992; alpha = Houpert's Roelands-equivalent of the reference oil, Z = 0.68).
+tehl::ContactConditions MoesPoint() {
+  const double alpha = 0.68 * (std::log(kEta0) + 9.67) / 1.96e8;
+  const double g = alpha * kEPrime;
+  const double u = std::pow(kMoesL / g, 4) / 2.0;
+  const double w = kMoesM * std::sqrt(2.0 * u);
+  const double um = u * kEPrime * kRadius / kEta0;
+  return tehl::ContactConditions{kRadius, um, um, w * kEPrime * kRadius,
+                                 tehl::testing::kReferenceT0};
+}
+
+tehl::UniformGrid Grid(int n) {
+  const auto hz = tehl::LineContactHertz(MoesPoint().load_n_per_m, kRadius, kEPrime);
+  return tehl::UniformGrid::AroundHertz(hz.half_width_m, n);
+}
+
+double StatusKb(const char* key) {
+  std::ifstream f("/proc/self/status");
+  std::string line;
+  const std::string k = std::string(key) + ":";
+  while (std::getline(f, line))
+    if (line.rfind(k, 0) == 0) return std::stod(line.substr(k.size()));
+  return -1;
+}
+
+bool ResetPeak() {
+  std::ofstream f("/proc/self/clear_refs");
+  f << "5";
+  f.flush();
+  return static_cast<bool>(f);
+}
+
+double Seconds(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// One-off: building an ElasticDeflection (FFTW_MEASURE plans) for a size the process has not
+// planned yet. Registered first, before any solver has planned these sizes.
+void BM_DeflectionPlanning(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    tehl::ElasticDeflection k(n, Grid(n).dx_m(), kEPrime, tehl::FftPlanEffort::kMeasure);
+    benchmark::DoNotOptimize(k.Coefficient(0));
+  }
+}
+
+// One FFT convolution v = K p (plans reused), the unit of the Newton-iteration ratio.
+void BM_FftConvolution(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const tehl::ElasticDeflection k(n, Grid(n).dx_m(), kEPrime, tehl::FftPlanEffort::kMeasure);
+  Eigen::VectorXd p = Eigen::VectorXd::Constant(n, 1e9), v(n);
+  for (auto _ : state) {
+    k.Apply(p.data(), v.data());
+    benchmark::DoNotOptimize(v.data());
+  }
+}
+
+// Second argument: 0 = auto, 1 = dense LU, 2 = Newton-Krylov.
+tehl::LinearSolverKind Kind(int64_t code) {
+  return code == 0 ? tehl::LinearSolverKind::kAuto
+                   : code == 1 ? tehl::LinearSolverKind::kDense
+                               : tehl::LinearSolverKind::kNewtonKrylov;
+}
+
+// Cold solve then warm re-solve; the benchmark's own time is their sum, the counters split it.
+void BM_Steady(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const tehl::Lubricant oil = tehl::testing::ReferenceOil(kEta0, 0.68);
+  tehl::FilmEffects effects;
+  effects.transient = false;
+  tehl::LineContactSolver::Options opt;
+  opt.linear_solver = Kind(state.range(1));
+  // Without this a failing Newton-Krylov solve (n >= 2049, see docs/performance.md) spends
+  // many minutes in load continuation; the failure is reported by the counters instead.
+  if (opt.linear_solver != tehl::LinearSolverKind::kDense) opt.max_continuation_stages = 0;
+  const tehl::UniformGrid grid = Grid(n);
+  tehl::LineContactSolver solver(grid, kEPrime, oil, effects, opt);
+  const tehl::ContactConditions c = MoesPoint();
+  tehl::ContactConditions c_warm = c;
+  c_warm.load_n_per_m *= 1.01;
+  for (auto _ : state) {
+    const double rss0 = StatusKb("VmRSS");
+    const bool peak_ok = ResetPeak();
+    tehl::FilmState s;
+    auto t0 = Clock::now();
+    const auto cold = solver.SolveSteady(c, &s);
+    const double cold_s = Seconds(t0);
+    t0 = Clock::now();
+    const auto warm = solver.SolveSteady(c_warm, &s);
+    const double warm_s = Seconds(t0);
+    state.counters["peak_mb"] = peak_ok ? (StatusKb("VmHWM") - rss0) / 1024.0 : -1.0;
+    state.counters["cold_s"] = cold_s;
+    state.counters["cold_ok"] = cold.usable();
+    state.counters["cold_newton"] = cold.total_iterations;
+    state.counters["cold_gmres"] = cold.krylov_iterations;
+    state.counters["warm_s"] = warm_s;
+    state.counters["warm_ok"] = warm.usable();
+    state.counters["warm_newton"] = warm.total_iterations;
+    state.counters["warm_gmres"] = warm.krylov_iterations;
+    state.counters["s_per_newton"] =
+        warm.total_iterations > 0 ? warm_s / warm.total_iterations : 0.0;
+    state.counters["nk"] = warm.linear_solver == "newton_krylov";
+  }
+}
+
+void Sizes(benchmark::internal::Benchmark* b) {
+  for (int n = 513; n <= 16385; n = 2 * n - 1) b->Arg(n);
+}
+
+void Solves(benchmark::internal::Benchmark* b) {
+  for (int n = 513; n <= 16385; n = 2 * n - 1) {
+    b->Args({n, 0});
+    if (n <= 4097) b->Args({n, 1});  // dense LU: O(n^2) memory, O(n^3) time
+    if (n >= 1025 && n <= 4097) b->Args({n, 2});  // auto is Newton-Krylov above dense_max_nodes
+  }
+}
+
+BENCHMARK(BM_DeflectionPlanning)->Apply(Sizes)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FftConvolution)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Steady)->Apply(Solves)->Iterations(1)->Unit(benchmark::kSecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
