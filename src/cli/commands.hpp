@@ -18,6 +18,7 @@ Command AddCaseCommand(CLI::App& app);       // tehl case --print-default | --ch
 Command AddLubricantCommand(CLI::App& app);  // tehl lubricant NAME --p ... --T ...
 Command AddGearCommand(CLI::App& app);       // tehl gear CASE [--csv F] [--profile F]
 Command AddRunCommand(CLI::App& app);        // tehl run CASE
+Command AddPlotCommand(CLI::App& app);       // tehl plot RESULT.h5 [-o DIR]
 
 // Exit codes.
 inline constexpr int kExitOk = 0;

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
       AddLubricantCommand(app),
       AddGearCommand(app),
       AddRunCommand(app),
+      AddPlotCommand(app),
   };
   try {
     app.parse(argc, argv);

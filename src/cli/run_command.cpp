@@ -1,38 +1,78 @@
-// tehl run CASE: runs a case (a [contact] line contact in this version).
+// tehl run CASE: runs a case. A [gear] case runs the mesh cycle from A to E (HDF5 result and
+// CSV of the cycle table); a [contact] case runs the plain line contact (CSV files).
 #include <cstdio>
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "scene/case_reader.hpp"
 #include "tehl/scene/contact_scene.hpp"
+#include "tehl/scene/mesh_cycle_scene.hpp"
 
 namespace tehl::cli {
+namespace {
+
+struct RunArgs {
+  std::string case_path;
+  std::string output_dir;
+  bool quiet = false;
+};
+
+int RunGear(const RunArgs& a) {
+  MeshCycleRunOptions o;
+  o.quiet = a.quiet;
+  o.output_dir = a.output_dir;
+  const MeshCycleResult r = RunMeshCycle(a.case_path, o);
+  const MeshCycleStep& pitch = r.steps[r.PitchStep()];
+  std::printf("mesh cycle A..E: %zu of %d steps (%s), grid %zu nodes, %.1f s\n",
+              r.steps.size() - 1, r.planned_steps, r.step_rule.c_str(), r.x_m.size(),
+              r.wall_time_s);
+  std::printf("at the pitch point (s = %.4g mm): h_c = %.6g m, h_min = %.6g m, p_max = %.6g Pa\n",
+              pitch.s_m * 1e3, pitch.h_c_m, pitch.h_min_m, pitch.p_max_pa);
+  std::printf("wrote %s%s%s\n", r.hdf5_path.c_str(), r.csv_path.empty() ? "" : " and ",
+              r.csv_path.c_str());
+  if (!r.converged()) {
+    const MeshCycleStep& last = r.steps.back();
+    std::fprintf(stderr, "tehl run: step %zu (s = %.4g mm) did not converge: %s\n",
+                 r.steps.size() - 1, last.s_m * 1e3, last.summary.message.c_str());
+    return kExitNotConverged;
+  }
+  return kExitOk;
+}
+
+int RunContact(const RunArgs& a) {
+  ContactRunOptions o;
+  o.quiet = a.quiet;
+  o.output_dir = a.output_dir;
+  const ContactRunResult r = RunContactCase(a.case_path, o);
+  const auto& last = r.steps.back();
+  std::printf("h_min = %.6g m, h_c = %.6g m, p_max = %.6g Pa\n", last.h_min_m, last.h_c_m,
+              last.p_max_pa);
+  std::printf("wrote %s and %s\n", r.profile_csv.c_str(), r.history_csv.c_str());
+  if (!r.converged()) {
+    std::fprintf(stderr, "tehl run: the solver did not converge: %s\n",
+                 last.summary.message.c_str());
+    return kExitNotConverged;
+  }
+  return kExitOk;
+}
+
+}  // namespace
 
 Command AddRunCommand(CLI::App& app) {
-  struct Args {
-    std::string case_path;
-    std::string output_dir;
-    bool quiet = false;
-  };
-  auto args = std::make_shared<Args>();
-  CLI::App* sub = app.add_subcommand("run", "Run a case: film pressure and thickness");
+  auto args = std::make_shared<RunArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "run", "Run a case: the mesh cycle of a [gear] case, or a [contact] line contact");
   sub->add_option("CASE", args->case_path, "Case file (.toml)")->required();
   sub->add_option("-o,--output-dir", args->output_dir, "Folder for the results ([output])");
   sub->add_flag("-q,--quiet", args->quiet, "No progress line on stderr");
   return {sub, [args]() {
-            ContactRunOptions o;
-            o.quiet = args->quiet;
-            o.output_dir = args->output_dir;
-            const ContactRunResult r = RunContactCase(args->case_path, o);
-            const auto& last = r.steps.back();
-            std::printf("h_min = %.6g m, h_c = %.6g m, p_max = %.6g Pa\n", last.h_min_m,
-                        last.h_c_m, last.p_max_pa);
-            std::printf("wrote %s and %s\n", r.profile_csv.c_str(), r.history_csv.c_str());
-            if (!r.converged()) {
-              std::fprintf(stderr, "tehl run: the solver did not converge: %s\n",
-                           last.summary.message.c_str());
-              return kExitNotConverged;
-            }
-            return kExitOk;
+            // The scene is chosen by the section the file has; each scene reports every
+            // problem of its own (a file with neither section is reported by the contact
+            // scene, which names both).
+            const internal::Document doc = internal::ReadCaseDocument(args->case_path);
+            const bool gear = doc.HasSection("gear") || doc.HasSection("gear.pinion") ||
+                              doc.HasSection("gear.wheel");
+            return gear && !doc.HasSection("contact") ? RunGear(*args) : RunContact(*args);
           }};
 }
 

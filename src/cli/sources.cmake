@@ -5,4 +5,5 @@ list(APPEND TEHL_CLI_SOURCES
   src/cli/run_command.cpp
   src/cli/lubricant_command.cpp
   src/cli/gear_command.cpp
+  src/cli/plot_command.cpp
 )

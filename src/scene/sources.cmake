@@ -5,4 +5,6 @@ list(APPEND TEHL_SOURCES
   src/scene/film_case.cpp
   src/scene/contact_scene.cpp
   src/scene/gear_case.cpp
+  src/scene/mesh_cycle_output.cpp
+  src/scene/mesh_cycle_scene.cpp
 )

@@ -1,0 +1,80 @@
+// The mesh cycle of a gear case: the gear core drives the film solver along the path of
+// contact of the tracked tooth pair, from engagement A to disengagement E (DESIGN.md
+// sections 2, 4 and 6; seed 004 section 2).
+//
+// At each step the path kinematics give R(s), u1(s), u2(s) (path_of_contact.hpp) and the
+// load sharing gives w(s) = share(s) F_bt / b (load_sharing.hpp); the film solver
+// (line_contact_solver.hpp) solves the transient line contact on ONE fixed grid from
+// x_start_b b_max to x_end_b b_max, b_max the largest Hertz half-width on the path. The run
+// starts from the steady film at A; steps land exactly on B and D, where the load share jumps:
+// a step that lands on B or D uses the load arriving there (left limit), the next one the load
+// after it. s and t are related by t = s / (r_b1 w1).
+//
+// Seed 004 (Fig. 3) plots the path quantities relative to the pitch point C:
+//   C_RT = R / R0,  C_UT = um / u0,  C_WT = w / w0   with R0, u0, w0 at C.
+// Results: one HDF5 file per run and a CSV of the cycle table (docs/results.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tehl/ehl/line_contact_solver.hpp"
+
+namespace tehl {
+
+struct MeshCycleRunOptions {
+  bool quiet = false;       // no progress line on stderr
+  std::string output_dir;   // overrides [output] directory when not empty
+  bool write_files = true;  // false: solve only, write nothing (library use, tests)
+};
+
+struct MeshCycleStep {
+  double s_m = 0;                 // distance from A along the line of action [m]
+  double time_s = 0;              // t = s / (r_b1 w1) since A [s]
+  double reduced_radius_m = 0;    // R [m]
+  double u1_m_s = 0, u2_m_s = 0;  // pinion and wheel surface speeds [m/s]
+  double um_m_s = 0;              // entrainment speed (u1 + u2)/2 [m/s]
+  double srr = 0;                 // slide-to-roll ratio (u1 - u2)/um [-]
+  double load_n_per_m = 0;        // w of the tracked pair [N/m]
+  int pairs_in_contact = 0;       // tooth pairs sharing the load [-]
+  double h_min_m = 0, h_c_m = 0;  // minimum and central (x = 0) film [m]
+  double p_max_pa = 0;            // [Pa]
+  double c_rt = 0, c_ut = 0, c_wt = 0;  // R/R0, um/u0, w/w0 (seed 004 Fig. 3) [-]
+  std::string zone;               // "A-B", "B-D" or "D-E" (the segment the step ends in)
+  LineContactSolver::Summary summary;
+};
+
+struct MeshCycleResult {
+  std::vector<MeshCycleStep> steps;  // steps[0]: the steady film at A; then one per step
+  std::vector<double> x_m;           // grid nodes [m]
+  std::vector<std::vector<double>> p_pa, h_m;  // profiles per step over x [Pa], [m]
+  double length_m = 0;               // g_alpha, A to E [m]
+  double s_b_m = 0, s_c_m = 0, s_d_m = 0;  // B, pitch point C, D from A [m]
+  double r0_m = 0, u0_m_s = 0, w0_n_per_m = 0;  // R, um and w at C [m], [m/s], [N/m]
+  double max_half_width_m = 0;       // b_max, sets the grid [m]
+  int planned_steps = 0;             // steps from A to E [-]
+  std::string step_rule;             // how the step count was chosen
+  double wall_time_s = 0;            // whole run [s]
+  std::string hdf5_path, csv_path;   // written files ("" when not written)
+  bool converged() const;            // every planned step solved and usable
+  int PitchStep() const;             // index of the step nearest to C
+};
+
+// Step ends s_1..s_N in (0, g], uniform within each of the segments [0, s_b], [s_b, s_d],
+// [s_d, g] (switch points outside (0, g) are skipped), `steps` in all, each segment at least
+// `min_per_segment[i]` (and 1) steps; so B and D are step ends exactly. Returns s_0 = 0 first.
+std::vector<double> MeshCycleStepPositions(double length_m, double s_b_m, double s_d_m,
+                                           int steps,
+                                           const std::vector<int>& min_per_segment = {});
+
+// Automatic step count: four steps per transit of the entrainment across the Hertz
+// half-width, n = ceil(4 integral um / b dt) over A..E, clamped to [100, 200] (see
+// docs/results.md "Step count").
+int AutomaticMeshCycleSteps(double transits);
+
+// Reads a gear case and runs its mesh cycle. Throws InputError (with file:line) for bad
+// input; a step that does not converge stops the run, which is then still written (the
+// Summary of each step says how it ended).
+MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOptions& options);
+
+}  // namespace tehl

@@ -1,0 +1,129 @@
+#!/usr/bin/python3
+"""Figures of a tehl mesh-cycle result (HDF5, layout in docs/results.md) as PNG files.
+
+    plot_cycle.py RESULT.h5 [-o DIR]
+
+writes, like seed 004 Figs. 3-6 (isothermal quantities only):
+  <name>_cycle.png     C_RT = R/R0, C_UT = um/u0, C_WT = w/w0 along the path (Fig. 3)
+  <name>_profiles.png  film pressure and thickness over x at A, B, the pitch point, D, E (Fig. 4)
+  <name>_path.png      h_min, h_c and p_max along the path (Fig. 6)
+Exit codes: 0 done, 2 the file is missing or not a mesh-cycle result.
+"""
+import argparse
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import h5py  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def fail(message):
+    print(f"plot_cycle.py: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def mark_points(ax, cyc, mm):
+    """Vertical lines at B, the pitch point C and D (s in mm)."""
+    for name in ("s_B", "s_C", "s_D"):
+        s = cyc.attrs[name] * mm
+        ax.axvline(s, color="0.6", lw=0.8, ls="--")
+        ax.text(s, 1.0, " " + name[-1], transform=ax.get_xaxis_transform(), va="bottom",
+                ha="center", fontsize=8, color="0.3")
+
+
+def nearest(s, target):
+    return int(np.argmin(np.abs(s - target)))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("result")
+    ap.add_argument("-o", "--output-dir", default=None)
+    a = ap.parse_args()
+    if not os.path.isfile(a.result):
+        fail(f"{a.result}: no such file")
+    try:
+        f = h5py.File(a.result, "r")
+    except OSError as e:
+        fail(f"{a.result}: not an HDF5 file ({e})")
+    if "cycle" not in f or "profiles" not in f:
+        fail(f"{a.result}: no /cycle or /profiles group: not a tehl mesh-cycle result")
+    out = a.output_dir or os.path.dirname(os.path.abspath(a.result))
+    os.makedirs(out, exist_ok=True)
+    name = os.path.splitext(os.path.basename(a.result))[0]
+    cyc = f["cycle"]
+    mm, um = 1e3, 1e6
+    s = cyc["s"][:] * mm
+    written = []
+
+    # Fig. 3: the dimensionless curvature, speed and load along the path.
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    ax.plot(s, cyc["C_RT"][:], label=r"$C_{RT} = R/R_0$")
+    ax.plot(s, cyc["C_UT"][:], label=r"$C_{UT} = u_m/u_0$")
+    ax.plot(s, cyc["C_WT"][:], label=r"$C_{WT} = w/w_0$")
+    mark_points(ax, cyc, mm)
+    ax.set_xlabel("s, distance from A along the line of action [mm]")
+    ax.set_ylabel("relative to the pitch point [-]")
+    ax.set_title(f"{name}: curvature, entrainment speed and load along the path", fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    written.append(os.path.join(out, f"{name}_cycle.png"))
+    fig.savefig(written[-1], dpi=120)
+    plt.close(fig)
+
+    # Fig. 4: pressure and film over x at A, B, C, D, E.
+    prof = f["profiles"]
+    if "p" in prof and "h" in prof:
+        x = prof["x"][:] * mm
+        p, h = prof["p"], prof["h"]
+        picks = [("A", 0.0), ("B", cyc.attrs["s_B"]), ("pitch", cyc.attrs["s_C"]),
+                 ("D", cyc.attrs["s_D"]), ("E", cyc.attrs["length"])]
+        fig, (ap_, ah) = plt.subplots(2, 1, figsize=(7, 6.5), sharex=True)
+        for label, target in picks:
+            k = min(nearest(s, target * mm), p.shape[0] - 1)
+            tag = f"{label} (s = {s[k]:.2f} mm)"
+            ap_.plot(x, p[k, :] / 1e9, label=tag)
+            ah.plot(x, h[k, :] * um, label=tag)
+        ap_.set_ylabel("pressure p [GPa]")
+        ah.set_ylabel("film thickness h [um]")
+        ah.set_xlabel("x [mm]")
+        top = np.percentile(h[:, :] * um, 60)
+        ah.set_ylim(0, max(top, 1e-3))
+        for axis in (ap_, ah):
+            axis.grid(alpha=0.3)
+            axis.legend(fontsize=8)
+        ap_.set_title(f"{name}: film pressure and thickness along the mesh", fontsize=10)
+        fig.tight_layout()
+        written.append(os.path.join(out, f"{name}_profiles.png"))
+        fig.savefig(written[-1], dpi=120)
+        plt.close(fig)
+
+    # Fig. 6: film thickness and pressure along the path.
+    fig, (ah, ap_) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    ah.plot(s, cyc["h_c"][:] * um, label=r"$h_c$ (x = 0)")
+    ah.plot(s, cyc["h_min"][:] * um, label=r"$h_{min}$")
+    ah.set_ylabel("film thickness [um]")
+    ap_.plot(s, cyc["p_max"][:] / 1e9, color="C3", label=r"$p_{max}$")
+    ap_.set_ylabel("maximum pressure [GPa]")
+    ap_.set_xlabel("s, distance from A along the line of action [mm]")
+    for axis in (ah, ap_):
+        mark_points(axis, cyc, mm)
+        axis.grid(alpha=0.3)
+        axis.legend(fontsize=8)
+    ah.set_title(f"{name}: film thickness and pressure along the path", fontsize=10)
+    fig.tight_layout()
+    written.append(os.path.join(out, f"{name}_path.png"))
+    fig.savefig(written[-1], dpi=120)
+    plt.close(fig)
+
+    for w in written:
+        print(f"wrote {w}")
+
+
+if __name__ == "__main__":
+    main()

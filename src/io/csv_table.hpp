@@ -1,0 +1,20 @@
+// A table of numeric columns written as CSV, atomically (a `.part` file renamed when
+// complete) and only when every value is finite. Private to src/.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace tehl::internal {
+
+struct CsvColumn {
+  std::string header;          // column name with its unit, e.g. "h_min_m"
+  std::vector<double> values;  // one per row
+};
+
+// Writes the columns (all of one length) with a header line, "%.9e" per value. Throws
+// NonFiniteError (tehl/io/hdf5_writer.hpp) naming the column and row of a NaN or Inf, and
+// std::runtime_error when the file cannot be written; nothing is left under `path` then.
+void WriteCsvTable(const std::string& path, const std::vector<CsvColumn>& columns);
+
+}  // namespace tehl::internal

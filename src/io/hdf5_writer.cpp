@@ -1,0 +1,230 @@
+#include "tehl/io/hdf5_writer.hpp"
+
+#include <hdf5.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+namespace tehl {
+namespace {
+namespace fs = std::filesystem;
+
+[[noreturn]] void Fail(const std::string& what) {
+  throw std::runtime_error("HDF5 result file: " + what);
+}
+
+// Closes an HDF5 handle of any kind when it goes out of scope.
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  hid_t get() const { return id_; }
+  bool ok() const { return id_ >= 0; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+hid_t VariableString() {
+  const hid_t t = H5Tcopy(H5T_C_S1);
+  H5Tset_size(t, H5T_VARIABLE);
+  H5Tset_cset(t, H5T_CSET_UTF8);
+  return t;
+}
+
+void WriteStringAttribute(hid_t object, const std::string& name, const std::string& value) {
+  Handle type(VariableString(), H5Tclose);
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  if (H5Aexists(object, name.c_str()) > 0) H5Adelete(object, name.c_str());
+  Handle attr(H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+              H5Aclose);
+  const char* p = value.c_str();
+  if (!attr.ok() || H5Awrite(attr.get(), type.get(), &p) < 0)
+    Fail("cannot write attribute " + name);
+}
+
+}  // namespace
+
+void CheckFinite(const std::string& dataset, const std::vector<double>& values) {
+  for (size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i])) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%g", values[i]);
+      throw NonFiniteError("refusing to write a non-finite value: " + dataset + "[" +
+                           std::to_string(i) + "] = " + buf);
+    }
+}
+
+class Hdf5Writer::Impl {
+ public:
+  std::string final_path;
+  hid_t file = -1;
+  bool committed = false;
+
+  std::string Temporary() const { return final_path + ".part"; }
+
+  // Creates every missing group on the way to `dataset` ("/a/b/name" creates /a and /a/b).
+  void MakeParents(const std::string& dataset) {
+    if (dataset.empty() || dataset[0] != '/') Fail("dataset path must be absolute: " + dataset);
+    size_t pos = 1;
+    while ((pos = dataset.find('/', pos)) != std::string::npos) {
+      const std::string group = dataset.substr(0, pos);
+      if (H5Lexists(file, group.c_str(), H5P_DEFAULT) <= 0) {
+        Handle g(H5Gcreate2(file, group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                 H5Gclose);
+        if (!g.ok()) Fail("cannot create group " + group);
+      }
+      ++pos;
+    }
+  }
+
+  void Require() const {
+    if (file < 0) Fail("the file " + final_path + " is already committed or closed");
+  }
+
+  void WriteNumeric(const std::string& dataset, const void* data, hid_t mem_type, hid_t file_type,
+                    int rank, const hsize_t* dims, const std::string& unit,
+                    const std::string& meaning) {
+    Require();
+    MakeParents(dataset);
+    Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
+    Handle set(H5Dcreate2(file, dataset.c_str(), file_type, space.get(), H5P_DEFAULT,
+                          H5P_DEFAULT, H5P_DEFAULT),
+               H5Dclose);
+    if (!set.ok()) Fail("cannot create dataset " + dataset);
+    bool empty = false;
+    for (int i = 0; i < rank; ++i) empty = empty || dims[i] == 0;
+    if (!empty && H5Dwrite(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
+      Fail("cannot write dataset " + dataset);
+    WriteStringAttribute(set.get(), "unit", unit);
+    WriteStringAttribute(set.get(), "meaning", meaning);
+  }
+};
+
+Hdf5Writer::Hdf5Writer(const std::string& final_path) : impl_(std::make_unique<Impl>()) {
+  impl_->final_path = final_path;
+  const fs::path parent = fs::path(final_path).parent_path();
+  if (!parent.empty()) fs::create_directories(parent);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not stderr noise
+  impl_->file = H5Fcreate(impl_->Temporary().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (impl_->file < 0) Fail("cannot create " + impl_->Temporary());
+}
+
+Hdf5Writer::~Hdf5Writer() {
+  if (impl_ && !impl_->committed) {
+    if (impl_->file >= 0) H5Fclose(impl_->file);
+    std::error_code ec;
+    fs::remove(impl_->Temporary(), ec);
+  }
+}
+
+void Hdf5Writer::WriteVector(const std::string& dataset, const std::vector<double>& values,
+                             const std::string& unit, const std::string& meaning) {
+  CheckFinite(dataset, values);
+  const hsize_t dims[1] = {values.size()};
+  impl_->WriteNumeric(dataset, values.data(), H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, 1, dims, unit,
+                      meaning);
+}
+
+void Hdf5Writer::WriteMatrix(const std::string& dataset, const std::vector<double>& row_major,
+                             int rows, int cols, const std::string& unit,
+                             const std::string& meaning) {
+  if (rows < 0 || cols < 0 || row_major.size() != static_cast<size_t>(rows) * cols)
+    Fail(dataset + ": " + std::to_string(row_major.size()) + " values for " +
+         std::to_string(rows) + " x " + std::to_string(cols));
+  CheckFinite(dataset, row_major);
+  const hsize_t dims[2] = {static_cast<hsize_t>(rows), static_cast<hsize_t>(cols)};
+  impl_->WriteNumeric(dataset, row_major.data(), H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, 2, dims, unit,
+                      meaning);
+}
+
+void Hdf5Writer::WriteInts(const std::string& dataset, const std::vector<int>& values,
+                           const std::string& meaning) {
+  const hsize_t dims[1] = {values.size()};
+  impl_->WriteNumeric(dataset, values.data(), H5T_NATIVE_INT, H5T_STD_I32LE, 1, dims, "-",
+                      meaning);
+}
+
+void Hdf5Writer::WriteStrings(const std::string& dataset, const std::vector<std::string>& values,
+                              const std::string& meaning) {
+  impl_->Require();
+  impl_->MakeParents(dataset);
+  std::vector<const char*> ptrs;
+  for (const auto& v : values) ptrs.push_back(v.c_str());
+  Handle type(VariableString(), H5Tclose);
+  const hsize_t dims[1] = {values.size()};
+  Handle space(H5Screate_simple(1, dims, nullptr), H5Sclose);
+  Handle set(H5Dcreate2(impl_->file, dataset.c_str(), type.get(), space.get(), H5P_DEFAULT,
+                        H5P_DEFAULT, H5P_DEFAULT),
+             H5Dclose);
+  if (!set.ok()) Fail("cannot create dataset " + dataset);
+  if (!values.empty() &&
+      H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0)
+    Fail("cannot write dataset " + dataset);
+  WriteStringAttribute(set.get(), "unit", "");
+  WriteStringAttribute(set.get(), "meaning", meaning);
+}
+
+void Hdf5Writer::WriteText(const std::string& dataset, const std::string& text,
+                           const std::string& meaning) {
+  impl_->Require();
+  impl_->MakeParents(dataset);
+  Handle type(VariableString(), H5Tclose);
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  Handle set(H5Dcreate2(impl_->file, dataset.c_str(), type.get(), space.get(), H5P_DEFAULT,
+                        H5P_DEFAULT, H5P_DEFAULT),
+             H5Dclose);
+  const char* p = text.c_str();
+  if (!set.ok() || H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &p) < 0)
+    Fail("cannot write dataset " + dataset);
+  WriteStringAttribute(set.get(), "unit", "");
+  WriteStringAttribute(set.get(), "meaning", meaning);
+}
+
+void Hdf5Writer::SetAttribute(const std::string& object, const std::string& name,
+                              const std::string& value) {
+  impl_->Require();
+  Handle obj(H5Oopen(impl_->file, object.c_str(), H5P_DEFAULT), H5Oclose);
+  if (!obj.ok()) Fail("no object " + object + " for attribute " + name);
+  WriteStringAttribute(obj.get(), name, value);
+}
+
+void Hdf5Writer::SetAttribute(const std::string& object, const std::string& name, double value,
+                              const std::string& unit) {
+  CheckFinite(object + "@" + name, {value});
+  impl_->Require();
+  Handle obj(H5Oopen(impl_->file, object.c_str(), H5P_DEFAULT), H5Oclose);
+  if (!obj.ok()) Fail("no object " + object + " for attribute " + name);
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  if (H5Aexists(obj.get(), name.c_str()) > 0) H5Adelete(obj.get(), name.c_str());
+  Handle attr(H5Acreate2(obj.get(), name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
+                         H5P_DEFAULT),
+              H5Aclose);
+  if (!attr.ok() || H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value) < 0)
+    Fail("cannot write attribute " + name);
+  WriteStringAttribute(obj.get(), name + "_unit", unit);
+}
+
+void Hdf5Writer::Commit() {
+  impl_->Require();
+  const bool flushed = H5Fflush(impl_->file, H5F_SCOPE_GLOBAL) >= 0;
+  const bool closed = H5Fclose(impl_->file) >= 0;
+  impl_->file = -1;
+  if (!flushed || !closed) Fail("cannot close " + temporary_path());
+  std::error_code ec;
+  fs::rename(temporary_path(), impl_->final_path, ec);
+  if (ec) Fail("cannot rename " + temporary_path() + " to " + impl_->final_path + ": " +
+               ec.message());
+  impl_->committed = true;
+}
+
+const std::string& Hdf5Writer::final_path() const { return impl_->final_path; }
+std::string Hdf5Writer::temporary_path() const { return impl_->Temporary(); }
+
+}  // namespace tehl

@@ -1,0 +1,12 @@
+// Where tehl's helper scripts (scripts/*.py) are: $TEHL_SCRIPT_DIR, then the source tree
+// (TEHL_SOURCE_SCRIPT_DIR), then the installed share/tehl/scripts. Private to src/.
+#pragma once
+
+#include <string>
+
+namespace tehl::internal {
+
+// Full path of the script `name` (e.g. "plot_cycle.py"), or "" when none of the folders has it.
+std::string FindScript(const std::string& name);
+
+}  // namespace tehl::internal

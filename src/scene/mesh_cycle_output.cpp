@@ -1,0 +1,138 @@
+#include "scene/mesh_cycle_output.hpp"
+
+#include <functional>
+
+#include "io/csv_table.hpp"
+#include "tehl/io/hdf5_writer.hpp"
+
+namespace tehl::internal {
+namespace {
+
+// One column of /cycle: name, unit, meaning and how to read it from a step.
+struct CycleColumn {
+  const char* name;
+  const char* unit;
+  const char* meaning;
+  std::function<double(const MeshCycleStep&)> get;
+};
+
+const std::vector<CycleColumn>& CycleColumns() {
+  static const std::vector<CycleColumn> cols = {
+      {"s", "m", "distance of the contact from A along the line of action",
+       [](const MeshCycleStep& k) { return k.s_m; }},
+      {"t", "s", "time since A, t = s / (r_b1 w1)", [](const MeshCycleStep& k) { return k.time_s; }},
+      {"R", "m", "reduced radius of curvature, 1/R = 1/rho1 + 1/rho2",
+       [](const MeshCycleStep& k) { return k.reduced_radius_m; }},
+      {"u1", "m/s", "pinion surface speed", [](const MeshCycleStep& k) { return k.u1_m_s; }},
+      {"u2", "m/s", "wheel surface speed", [](const MeshCycleStep& k) { return k.u2_m_s; }},
+      {"um", "m/s", "entrainment speed (u1 + u2)/2",
+       [](const MeshCycleStep& k) { return k.um_m_s; }},
+      {"SRR", "-", "slide-to-roll ratio (u1 - u2)/um", [](const MeshCycleStep& k) { return k.srr; }},
+      {"w", "N/m", "load per unit face width on the tracked pair",
+       [](const MeshCycleStep& k) { return k.load_n_per_m; }},
+      {"h_min", "m", "minimum film thickness", [](const MeshCycleStep& k) { return k.h_min_m; }},
+      {"h_c", "m", "central film thickness (x = 0)", [](const MeshCycleStep& k) { return k.h_c_m; }},
+      {"p_max", "Pa", "maximum film pressure", [](const MeshCycleStep& k) { return k.p_max_pa; }},
+      {"C_RT", "-", "R / R0, R0 at the pitch point (seed 004 Fig. 3)",
+       [](const MeshCycleStep& k) { return k.c_rt; }},
+      {"C_UT", "-", "um / u0, u0 at the pitch point (seed 004 Fig. 3)",
+       [](const MeshCycleStep& k) { return k.c_ut; }},
+      {"C_WT", "-", "w / w0, w0 at the pitch point (seed 004 Fig. 3)",
+       [](const MeshCycleStep& k) { return k.c_wt; }},
+  };
+  return cols;
+}
+
+std::vector<double> Column(const MeshCycleResult& r, const CycleColumn& c) {
+  std::vector<double> v;
+  for (const auto& k : r.steps) v.push_back(c.get(k));
+  return v;
+}
+
+std::vector<double> Flatten(const std::vector<std::vector<double>>& rows) {
+  std::vector<double> out;
+  for (const auto& row : rows) out.insert(out.end(), row.begin(), row.end());
+  return out;
+}
+
+}  // namespace
+
+void WriteMeshCycleHdf5(const std::string& path, const Document& doc,
+                        const std::string& case_path, const MeshCycleResult& r, bool profiles) {
+  Hdf5Writer h5(path);
+  h5.SetAttribute("/", "program", "tehl 0.1.0");
+  h5.SetAttribute("/", "case_file", case_path);
+  h5.SetAttribute("/", "converged", r.converged() ? "true" : "false");
+  h5.SetAttribute("/", "step_rule", r.step_rule);
+  h5.SetAttribute("/", "wall_time", r.wall_time_s, "s");
+  h5.WriteText("/case", doc.ToToml(), "the case as run, defaults filled (TOML)");
+
+  for (const auto& c : CycleColumns())
+    h5.WriteVector(std::string("/cycle/") + c.name, Column(r, c), c.unit, c.meaning);
+  std::vector<int> pairs;
+  std::vector<std::string> zones;
+  for (const auto& k : r.steps) {
+    pairs.push_back(k.pairs_in_contact);
+    zones.push_back(k.zone);
+  }
+  h5.WriteInts("/cycle/pairs_in_contact", pairs, "tooth pairs sharing the load");
+  h5.WriteStrings("/cycle/zone", zones, "segment of the path: A-B, B-D or D-E");
+  h5.SetAttribute("/cycle", "length", r.length_m, "m");
+  h5.SetAttribute("/cycle", "s_B", r.s_b_m, "m");
+  h5.SetAttribute("/cycle", "s_C", r.s_c_m, "m");
+  h5.SetAttribute("/cycle", "s_D", r.s_d_m, "m");
+  h5.SetAttribute("/cycle", "R0", r.r0_m, "m");
+  h5.SetAttribute("/cycle", "u0", r.u0_m_s, "m/s");
+  h5.SetAttribute("/cycle", "w0", r.w0_n_per_m, "N/m");
+  h5.SetAttribute("/cycle", "planned_steps", r.planned_steps, "-");
+
+  h5.WriteVector("/profiles/x", r.x_m, "m", "grid nodes, x = 0 at the contact point");
+  h5.SetAttribute("/profiles", "b_max", r.max_half_width_m, "m");
+  if (profiles) {
+    const int rows = static_cast<int>(r.p_pa.size());
+    const int cols = static_cast<int>(r.x_m.size());
+    h5.WriteMatrix("/profiles/p", Flatten(r.p_pa), rows, cols, "Pa",
+                   "film pressure over (step, x)");
+    h5.WriteMatrix("/profiles/h", Flatten(r.h_m), rows, cols, "m",
+                   "film thickness over (step, x)");
+  }
+
+  std::vector<std::string> termination, message;
+  std::vector<int> iterations, substeps;
+  std::vector<double> residual, wall, load_error;
+  for (const auto& k : r.steps) {
+    termination.push_back(ToString(k.summary.termination));
+    message.push_back(k.summary.message);
+    iterations.push_back(k.summary.total_iterations);
+    substeps.push_back(k.summary.substeps);
+    residual.push_back(k.summary.residual);
+    load_error.push_back(k.summary.load_error);
+    wall.push_back(k.summary.wall_time_s);
+  }
+  h5.WriteStrings("/solver/termination", termination, "how each step's solve ended");
+  h5.WriteStrings("/solver/message", message, "the solver's summary message per step");
+  h5.WriteInts("/solver/iterations", iterations, "Newton iterations per step (all stages)");
+  h5.WriteInts("/solver/substeps", substeps, "time substeps a step needed");
+  h5.WriteVector("/solver/residual", residual, "-", "final scaled residual max-norm");
+  h5.WriteVector("/solver/load_error", load_error, "-", "|integral p dx - w| / w");
+  h5.WriteVector("/solver/wall_time", wall, "s", "wall time of each step's solve");
+  h5.Commit();
+}
+
+void WriteMeshCycleCsv(const std::string& path, const MeshCycleResult& r) {
+  const auto& cols = CycleColumns();
+  std::vector<CsvColumn> table;
+  for (const auto& c : cols) {
+    // Header = name and unit as in the case keys: s_m, u1_m_s, w_n_per_m, p_max_pa, SRR.
+    const std::string unit = c.unit;
+    const std::string suffix = unit == "-"     ? ""
+                               : unit == "m/s" ? "_m_s"
+                               : unit == "N/m" ? "_n_per_m"
+                               : unit == "Pa"  ? "_pa"
+                                               : "_" + unit;
+    table.push_back({std::string(c.name) + suffix, Column(r, c)});
+  }
+  WriteCsvTable(path, table);
+}
+
+}  // namespace tehl::internal

@@ -1,0 +1,287 @@
+#include "tehl/scene/mesh_cycle_scene.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "scene/case_reader.hpp"
+#include "scene/film_case.hpp"
+#include "scene/gear_case.hpp"
+#include "scene/mesh_cycle_output.hpp"
+#include "tehl/error.hpp"
+#include "tehl/gear/load_sharing.hpp"
+#include "tehl/gear/path_of_contact.hpp"
+#include "tehl/units.hpp"
+
+namespace tehl {
+namespace {
+namespace fs = std::filesystem;
+using internal::Document;
+using Clock = std::chrono::steady_clock;
+
+// The path and load of the case at one position s; `left` takes the one-sided limit from
+// below at the switch points B and D (the load arriving there).
+struct PathState {
+  ContactPoint contact;
+  double load_n_per_m = 0;
+};
+
+class CyclePath {
+ public:
+  explicit CyclePath(const internal::GearCase& c)
+      : gear_(c), path_(*c.pair, c.operating.pinion_speed_rad_s),
+        w_nominal_(NominalToothLoad(*c.pair, c.operating).load_per_width_n_per_m) {}
+
+  const PathOfContact& path() const { return path_; }
+
+  PathState At(double s, bool left) const {
+    const double nudge = 1e-9 * path_.length_m();
+    double q = s;
+    if (left && s > nudge) q = s - nudge;
+    else if (!left && s < path_.length_m() - nudge) q = s + nudge;
+    PathState st;
+    st.contact = path_.At(s);
+    st.contact.pairs_in_contact = path_.At(q).pairs_in_contact;
+    const double share = gear_.load_sharing == LoadSharing::kLinear
+                             ? LinearLoadShare(path_, q)
+                             : StiffnessLoadShare(path_, q, gear_.pair_stiffness);
+    st.load_n_per_m = share * w_nominal_;
+    return st;
+  }
+
+ private:
+  const internal::GearCase& gear_;
+  PathOfContact path_;
+  double w_nominal_;
+};
+
+std::string Zone(const MeshCycleResult& r, double s) {
+  if (r.s_b_m < r.s_d_m) return s <= r.s_b_m ? "A-B" : (s <= r.s_d_m ? "B-D" : "D-E");
+  return s <= r.s_d_m ? "A-D" : (s <= r.s_b_m ? "D-B" : "B-E");  // eps_alpha >= 2
+}
+
+std::vector<double> SegmentEnds(double g, double sb, double sd) {
+  std::vector<double> ends;
+  for (double sw : {sb, sd})
+    if (sw > 1e-9 * g && sw < g * (1 - 1e-9)) ends.push_back(sw);
+  std::sort(ends.begin(), ends.end());
+  ends.push_back(g);
+  return ends;
+}
+
+}  // namespace
+
+bool MeshCycleResult::converged() const {
+  if (static_cast<int>(steps.size()) != planned_steps + 1) return false;
+  return std::all_of(steps.begin(), steps.end(),
+                     [](const MeshCycleStep& s) { return s.summary.usable(); });
+}
+
+int MeshCycleResult::PitchStep() const {
+  int best = 0;
+  for (size_t k = 1; k < steps.size(); ++k)
+    if (std::abs(steps[k].s_m - s_c_m) < std::abs(steps[best].s_m - s_c_m))
+      best = static_cast<int>(k);
+  return best;
+}
+
+std::vector<double> MeshCycleStepPositions(double g, double sb, double sd, int steps,
+                                           const std::vector<int>& min_per_segment) {
+  const std::vector<double> ends = SegmentEnds(g, sb, sd);
+  const size_t m = ends.size();
+  std::vector<double> len(m);
+  for (size_t i = 0; i < m; ++i) len[i] = ends[i] - (i ? ends[i - 1] : 0.0);
+  // Largest-remainder apportionment of `steps` by length, then the minimum per segment.
+  std::vector<int> n(m);
+  std::vector<std::pair<double, size_t>> rest;
+  int used = 0;
+  for (size_t i = 0; i < m; ++i) {
+    const double exact = steps * len[i] / g;
+    n[i] = static_cast<int>(std::floor(exact));
+    used += n[i];
+    rest.push_back({exact - n[i], i});
+  }
+  std::sort(rest.rbegin(), rest.rend());
+  for (size_t j = 0; used < steps && j < rest.size(); ++j, ++used) ++n[rest[j].second];
+  for (size_t i = 0; i < m; ++i) {
+    const int floor_i = i < min_per_segment.size() ? min_per_segment[i] : 1;
+    n[i] = std::max({n[i], floor_i, 1});
+  }
+  std::vector<double> s = {0.0};
+  for (size_t i = 0; i < m; ++i) {
+    const double a = i ? ends[i - 1] : 0.0;
+    for (int k = 1; k <= n[i]; ++k) s.push_back(k == n[i] ? ends[i] : a + len[i] * k / n[i]);
+  }
+  return s;
+}
+
+int AutomaticMeshCycleSteps(double transits) {
+  const double n = std::ceil(4.0 * transits);
+  return static_cast<int>(std::clamp(n, 100.0, 200.0));
+}
+
+MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOptions& ro) {
+  const auto t_start = Clock::now();
+  Document doc = internal::ReadCaseDocument(case_path);
+  if (doc.problems().empty() && !doc.HasSection("gear"))
+    doc.Problem("gear", "", "a mesh cycle needs a [gear] pair", "a case with [gear]");
+  doc.ThrowIfProblems();
+  std::optional<internal::GearCase> gear = internal::ReadGearCase(doc);
+  internal::FilmCase film = internal::ReadFilmCase(doc);
+  doc.ThrowIfProblems();
+  if (!gear || !gear->pair) {  // ReadGearCase has reported why
+    doc.Problem("gear", "", "the gear pair could not be built", "a valid gear pair");
+    doc.ThrowIfProblems();
+  }
+  const CyclePath cycle(*gear);
+  const PathOfContact& path = cycle.path();
+  const double e_prime = gear->ReducedModulusPa();
+
+  MeshCycleResult r;
+  r.length_m = path.length_m();
+  r.s_b_m = path.s_b_m();
+  r.s_c_m = path.s_c_m();
+  r.s_d_m = path.s_d_m();
+  const PathState pitch = cycle.At(r.s_c_m, true);
+  r.r0_m = pitch.contact.reduced_radius_m;
+  r.u0_m_s = pitch.contact.um_m_s;
+  r.w0_n_per_m = pitch.load_n_per_m;
+
+  // b_max and the entrainment transits over a fine sampling of the path (both sides of B, D).
+  const int samples = 400;
+  double transits = 0, um_max = 0;
+  for (int i = 0; i <= samples; ++i) {
+    const double s = r.length_m * i / samples;
+    for (bool left : {true, false}) {
+      const PathState st = cycle.At(s, left);
+      const double b =
+          LineContactHertz(st.load_n_per_m, st.contact.reduced_radius_m, e_prime).half_width_m;
+      r.max_half_width_m = std::max(r.max_half_width_m, b);
+      um_max = std::max(um_max, st.contact.um_m_s);
+      if (left && i > 0)
+        transits += st.contact.um_m_s / b * (path.duration_s() / samples);
+    }
+  }
+  const UniformGrid grid = UniformGrid::AroundHertz(r.max_half_width_m, film.grid_points,
+                                                    film.x_start_b, film.x_end_b);
+
+  // Step count: the user's, or automatic; with roughness at least dt <= dx/um per segment.
+  const long long user_steps = doc.Int("numerics", "steps");
+  const int auto_steps = AutomaticMeshCycleSteps(transits);
+  std::vector<int> min_seg;
+  int rough_total = 0;
+  if (film.effects.roughness) {
+    double a = 0;
+    for (double e : SegmentEnds(r.length_m, r.s_b_m, r.s_d_m)) {
+      double um_seg = 0;
+      for (int i = 0; i <= 50; ++i)
+        um_seg = std::max(um_seg, path.At(a + (e - a) * i / 50).um_m_s);
+      const int need = static_cast<int>(
+          std::ceil((e - a) / path.contact_speed_m_s() * um_seg / grid.dx_m() - 1e-9));
+      min_seg.push_back(std::max(need, 1));
+      rough_total += min_seg.back();
+      a = e;
+    }
+  }
+  int steps = user_steps > 0 ? static_cast<int>(user_steps) : auto_steps;
+  if (user_steps > 0 && film.effects.roughness && user_steps < rough_total) {
+    doc.Problem("numerics", "steps",
+                "with moving roughness the cycle needs dt <= dx/um: at least " +
+                    std::to_string(rough_total) + " steps on this grid",
+                "0 (automatic) or >= " + std::to_string(rough_total));
+    doc.ThrowIfProblems();
+  }
+  const std::vector<double> s_steps =
+      MeshCycleStepPositions(r.length_m, r.s_b_m, r.s_d_m, steps, min_seg);
+  r.planned_steps = static_cast<int>(s_steps.size()) - 1;
+  char rule[256];
+  if (user_steps > 0)
+    std::snprintf(rule, sizeof rule, "[numerics] steps = %lld", user_steps);
+  else
+    std::snprintf(rule, sizeof rule,
+                  "automatic: 4 steps per entrainment transit of b (%.1f transits), "
+                  "clamped to 100..200%s",
+                  transits, film.effects.roughness ? "; raised to dt <= dx/um (roughness)" : "");
+  r.step_rule = rule;
+
+  LineContactSolver solver(grid, e_prime, *film.lubricant, film.effects, film.options,
+                           film.surface1, film.surface2);
+  r.x_m = grid.Nodes();
+  FilmState state;
+  const auto t_solve = Clock::now();
+  const bool tty = isatty(STDERR_FILENO);
+  auto conditions = [&](const PathState& st) {
+    return ContactConditions{st.contact.reduced_radius_m, st.contact.u1_m_s, st.contact.u2_m_s,
+                             st.load_n_per_m, film.inlet_temperature_k};
+  };
+  auto record = [&](const PathState& st, const LineContactSolver::Summary& sum) {
+    MeshCycleStep k;
+    const ContactPoint& c = st.contact;
+    k.s_m = c.s_m;
+    k.time_s = c.time_s;
+    k.reduced_radius_m = c.reduced_radius_m;
+    k.u1_m_s = c.u1_m_s;
+    k.u2_m_s = c.u2_m_s;
+    k.um_m_s = c.um_m_s;
+    k.srr = c.srr;
+    k.load_n_per_m = st.load_n_per_m;
+    k.pairs_in_contact = c.pairs_in_contact;
+    k.h_min_m = state.MinFilm();
+    k.h_c_m = state.CentralFilm(grid);
+    k.p_max_pa = state.MaxPressure();
+    k.c_rt = k.reduced_radius_m / r.r0_m;
+    k.c_ut = k.um_m_s / r.u0_m_s;
+    k.c_wt = k.load_n_per_m / r.w0_n_per_m;
+    k.zone = Zone(r, k.s_m);
+    k.summary = sum;
+    r.p_pa.emplace_back(state.p_pa.data(), state.p_pa.data() + state.p_pa.size());
+    r.h_m.emplace_back(state.h_m.data(), state.h_m.data() + state.h_m.size());
+    r.steps.push_back(std::move(k));
+    if (ro.quiet) return;
+    const int done = static_cast<int>(r.steps.size()) - 1;
+    const double elapsed = std::chrono::duration<double>(Clock::now() - t_solve).count();
+    const double left = done > 0 ? elapsed / (done + 1) * (r.planned_steps - done) : 0.0;
+    const MeshCycleStep& b = r.steps.back();
+    std::fprintf(stderr, "%sstep %d/%d  s = %6.3f mm (%s)  h_min = %.4f um  %s  ~%.0f s left%s",
+                 tty ? "\r" : "", done, r.planned_steps, b.s_m * 1e3, b.zone.c_str(),
+                 b.h_min_m * 1e6, sum.usable() ? "ok" : ToString(sum.termination).c_str(), left,
+                 tty ? "   " : "\n");
+  };
+
+  PathState st = cycle.At(0.0, false);
+  ContactConditions c = conditions(st);
+  record(st, solver.SolveSteady(c, &state));
+  if (r.steps.back().summary.usable()) {
+    solver.BeginTransient(c, state);
+    for (size_t k = 1; k < s_steps.size(); ++k) {
+      st = cycle.At(s_steps[k], true);
+      c = conditions(st);
+      const double dt = (s_steps[k] - s_steps[k - 1]) / path.contact_speed_m_s();
+      record(st, solver.Step(c, dt, &state));
+      if (!r.steps.back().summary.usable()) break;
+    }
+  }
+  if (!ro.quiet && tty) std::fprintf(stderr, "\n");
+  r.wall_time_s = std::chrono::duration<double>(Clock::now() - t_start).count();
+
+  if (ro.write_files) {
+    const fs::path dir = ro.output_dir.empty() ? fs::path(doc.String("output", "directory"))
+                                               : fs::path(ro.output_dir);
+    std::string name = doc.String("output", "name");
+    if (name.empty()) name = fs::path(case_path).stem().string();
+    r.hdf5_path = (dir / (name + ".h5")).string();
+    internal::WriteMeshCycleHdf5(r.hdf5_path, doc, case_path, r,
+                                 doc.Bool("output", "profiles"));
+    if (doc.Bool("output", "csv")) {
+      r.csv_path = (dir / (name + "_cycle.csv")).string();
+      internal::WriteMeshCycleCsv(r.csv_path, r);
+    }
+  }
+  return r;
+}
+
+}  // namespace tehl
