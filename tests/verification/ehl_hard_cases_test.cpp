@@ -1,0 +1,90 @@
+// Hard cases of the isothermal EHL line contact (VALIDATION.md section 3: "points above
+// 2.5 GPa are beyond the regime of the fits ... they must converge or stop with a diagnostic,
+// never return NaN"). Each run either converges or returns usable() == false with a message;
+// in both cases the returned state is finite everywhere and p >= 0 (the Reynolds cavitation
+// condition). Invalid conditions are reported as kInvalidInput, never thrown, never NaN.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <limits>
+
+#include "verification/ehl_moes_point.hpp"
+
+namespace tehl {
+namespace {
+
+using testing::MoesPoint;
+using testing::MoesSolver;
+
+void ExpectConvergedOrDiagnosed(const MoesPoint& mp, int n) {
+  MoesSolver ms(mp, n);
+  FilmState st;
+  LineContactSolver::Summary sum;
+  ASSERT_NO_THROW(sum = ms.solver.SolveSteady(mp.Conditions(), &st));
+  std::printf("M = %g, L = %g, p_H = %.3g GPa, n = %d: %s; H_c = %.5g, H_min = %.5g, "
+              "p_max/p_H = %.4f\n",
+              mp.M, mp.L, mp.Hertz().max_pressure_pa / 1e9, n, sum.BriefReport().c_str(),
+              ms.Hc(st), ms.Hmin(st), st.MaxPressure() / mp.Hertz().max_pressure_pa);
+  if (!sum.usable()) EXPECT_FALSE(sum.message.empty());
+  ASSERT_TRUE(st.valid());
+  EXPECT_EQ(st.p_pa.size(), n);
+  EXPECT_TRUE(st.p_pa.allFinite());
+  EXPECT_TRUE(st.h_m.allFinite());
+  EXPECT_TRUE(std::isfinite(st.h0_m));
+  EXPECT_GE(st.p_pa.minCoeff(), 0.0);
+  EXPECT_TRUE(std::isfinite(sum.residual));
+}
+
+TEST(HardCasesVerification, VeryHighLoadAndPiezoviscosityM5000L25) {
+  // p_H = 31 GPa (VALIDATION.md section 1 groups): far beyond any real lubricant.
+  ExpectConvergedOrDiagnosed(MoesPoint{5000, 25}, 513);
+}
+
+TEST(HardCasesVerification, NearlyIsoviscousL1) {
+  // L = 1: almost no piezoviscosity, slow entrainment, p_H = 80 MPa.
+  ExpectConvergedOrDiagnosed(MoesPoint{20, 1}, 513);
+}
+
+TEST(HardCasesVerification, SteelAtFourGigapascal) {
+  // VALIDATION.md section 3 table point M = 500, L = 10: p_H = 3.99 GPa.
+  const MoesPoint mp{500, 10};
+  EXPECT_NEAR(mp.Hertz().max_pressure_pa / 1e9, 3.99, 0.005);
+  ExpectConvergedOrDiagnosed(mp, 513);
+}
+
+TEST(HardCasesVerification, InvalidConditionsAreReportedNotThrown) {
+  const MoesPoint mp{20, 10};
+  MoesSolver ms(mp, 257);
+  const ContactConditions good = mp.Conditions();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  struct Bad {
+    const char* what;
+    ContactConditions c;
+  };
+  std::vector<Bad> cases;
+  for (double r : {0.0, -0.01, nan}) cases.push_back({"R", {r, good.u1_m_s, good.u2_m_s,
+                                                            good.load_n_per_m, good.temperature_k}});
+  for (double u : {0.0, -1.0, nan}) cases.push_back({"um", {good.reduced_radius_m, u, u,
+                                                             good.load_n_per_m, good.temperature_k}});
+  for (double w : {0.0, -1e5, nan}) cases.push_back({"w", {good.reduced_radius_m, good.u1_m_s,
+                                                            good.u2_m_s, w, good.temperature_k}});
+  for (const Bad& b : cases) {
+    // From an empty state and from a valid starting guess: neither may gain a NaN.
+    for (bool with_guess : {false, true}) {
+      FilmState st;
+      if (with_guess) st = ms.solver.InitialGuess(good);
+      const FilmState before = st;
+      LineContactSolver::Summary sum;
+      ASSERT_NO_THROW(sum = ms.solver.SolveSteady(b.c, &st)) << b.what;
+      EXPECT_EQ(sum.termination, LineContactSolver::Termination::kInvalidInput) << b.what;
+      EXPECT_FALSE(sum.usable());
+      EXPECT_NE(sum.message.find("invalid"), std::string::npos) << sum.message;
+      EXPECT_TRUE(st.p_pa.allFinite() && st.h_m.allFinite()) << b.what;
+      EXPECT_EQ(st.p_pa.size(), before.p_pa.size());
+      if (with_guess) EXPECT_EQ((st.p_pa - before.p_pa).cwiseAbs().maxCoeff(), 0.0);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tehl
