@@ -62,8 +62,9 @@ class LineContactSolver {
  public:
   struct Options {
     LinearSolverKind linear_solver = LinearSolverKind::kAuto;
-    int dense_max_nodes = 2049;       // kAuto uses dense LU up to this many nodes [-]
-                                      // (measured: docs/performance.md)
+    int dense_max_nodes = 4097;       // kAuto uses dense LU up to this many nodes [-]
+                                      // (Newton-Krylov fails from 2049 nodes:
+                                      // docs/performance.md)
     int upwind_order = 2;             // Couette-term upwinding: 1 or 2 [-]
     TimeScheme time_scheme = TimeScheme::kBdf2;
     double tolerance = 1e-8;          // stop when the scaled residual max-norm < this [-]
