@@ -3,7 +3,6 @@
 #include <functional>
 
 #include "io/csv_table.hpp"
-#include "tehl/io/hdf5_writer.hpp"
 
 namespace tehl::internal {
 namespace {
@@ -57,15 +56,19 @@ std::vector<double> Flatten(const std::vector<std::vector<double>>& rows) {
 
 }  // namespace
 
-void WriteMeshCycleHdf5(const std::string& path, const Document& doc,
-                        const std::string& case_path, const MeshCycleResult& r, bool profiles) {
-  Hdf5Writer h5(path);
-  h5.SetAttribute("/", "program", "tehl 0.1.0");
-  h5.SetAttribute("/", "case_file", case_path);
+std::unique_ptr<Hdf5Writer> BeginMeshCycleHdf5(const std::string& path, const Document& doc,
+                                               const std::string& case_path) {
+  auto h5 = std::make_unique<Hdf5Writer>(path);
+  h5->SetAttribute("/", "program", "tehl 0.1.0");
+  h5->SetAttribute("/", "case_file", case_path);
+  h5->WriteText("/case", doc.ToToml(), "the case as run, defaults filled (TOML)");
+  return h5;
+}
+
+void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles) {
   h5.SetAttribute("/", "converged", r.converged() ? "true" : "false");
   h5.SetAttribute("/", "step_rule", r.step_rule);
   h5.SetAttribute("/", "wall_time", r.wall_time_s, "s");
-  h5.WriteText("/case", doc.ToToml(), "the case as run, defaults filled (TOML)");
 
   for (const auto& c : CycleColumns())
     h5.WriteVector(std::string("/cycle/") + c.name, Column(r, c), c.unit, c.meaning);

@@ -208,6 +208,18 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
                   transits, film.effects.roughness ? "; raised to dt <= dx/um (roughness)" : "");
   r.step_rule = rule;
 
+  // The result file is open (under its temporary name) for the whole run.
+  std::unique_ptr<Hdf5Writer> h5;
+  std::string csv_path;
+  if (ro.write_files) {
+    const fs::path dir = ro.output_dir.empty() ? fs::path(doc.String("output", "directory"))
+                                               : fs::path(ro.output_dir);
+    std::string name = doc.String("output", "name");
+    if (name.empty()) name = fs::path(case_path).stem().string();
+    h5 = internal::BeginMeshCycleHdf5((dir / (name + ".h5")).string(), doc, case_path);
+    csv_path = (dir / (name + "_cycle.csv")).string();
+  }
+
   LineContactSolver solver(grid, e_prime, *film.lubricant, film.effects, film.options,
                            film.surface1, film.surface2);
   r.x_m = grid.Nodes();
@@ -268,16 +280,11 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   if (!ro.quiet && tty) std::fprintf(stderr, "\n");
   r.wall_time_s = std::chrono::duration<double>(Clock::now() - t_start).count();
 
-  if (ro.write_files) {
-    const fs::path dir = ro.output_dir.empty() ? fs::path(doc.String("output", "directory"))
-                                               : fs::path(ro.output_dir);
-    std::string name = doc.String("output", "name");
-    if (name.empty()) name = fs::path(case_path).stem().string();
-    r.hdf5_path = (dir / (name + ".h5")).string();
-    internal::WriteMeshCycleHdf5(r.hdf5_path, doc, case_path, r,
-                                 doc.Bool("output", "profiles"));
+  if (h5) {
+    internal::FinishMeshCycleHdf5(*h5, r, doc.Bool("output", "profiles"));
+    r.hdf5_path = h5->final_path();
     if (doc.Bool("output", "csv")) {
-      r.csv_path = (dir / (name + "_cycle.csv")).string();
+      r.csv_path = csv_path;
       internal::WriteMeshCycleCsv(r.csv_path, r);
     }
   }

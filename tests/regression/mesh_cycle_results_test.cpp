@@ -1,0 +1,153 @@
+// The result files of `tehl run` on a gear case: the HDF5 file lists exactly the datasets of
+// docs/results.md with the units written there (h5ls -r and the HDF5 C API), the CSV has the
+// /cycle columns, and a run killed with SIGKILL half-way leaves no file under the final names.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "regression/mesh_cycle_runs.hpp"
+#include "unit/io/hdf5_read.hpp"
+
+namespace tehl {
+namespace {
+namespace fs = std::filesystem;
+using testing::ReadText;
+using testing::Reduced;
+using testing::ReducedCase;
+using testing::TempDirFor;
+
+// Dataset path -> unit, from the table of docs/results.md ("| `/a`, `/b` | shape | unit |").
+std::map<std::string, std::string> DocumentedDatasets() {
+  std::map<std::string, std::string> out;
+  std::istringstream doc(ReadText(std::string(TEHL_SOURCE_DIR) + "/docs/results.md"));
+  std::string line;
+  const std::regex row(R"(^\|([^|]*)\|([^|]*)\|([^|]*)\|)");
+  const std::regex path("`(/[^`]+)`");
+  while (std::getline(doc, line)) {
+    std::smatch m;
+    if (!std::regex_search(line, m, row) || m[1].str().find("attributes") != std::string::npos)
+      continue;
+    const std::string cell = m[1].str(), unit = m[3].str();
+    for (auto it = std::sregex_iterator(cell.begin(), cell.end(), path);
+         it != std::sregex_iterator(); ++it)
+      out[(*it)[1].str()] = std::regex_replace(unit, std::regex("^ +| +$"), "");
+  }
+  return out;
+}
+
+std::string Shell(const std::string& cmd) {
+  std::string out;
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[512];
+  while (p && fgets(buf, sizeof buf, p)) out += buf;
+  if (p) pclose(p);
+  return out;
+}
+
+TEST(MeshCycleResults, FileMatchesDocsResultsMd) {
+  const std::string dir = TempDirFor("out");
+  const std::string case_path = ReducedCase("seed004_sae40", Reduced({{"steps", "12"}}));
+  const std::string cmd = std::string("'") + TEHL_BINARY + "' run -q '" + case_path + "' -o '" +
+                          dir + "' > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const std::string stem = fs::path(case_path).stem().string();
+  const std::string h5 = dir + "/" + stem + ".h5";
+  ASSERT_TRUE(fs::exists(h5));
+  EXPECT_FALSE(fs::exists(h5 + ".part"));
+
+  // h5ls -r lists every dataset; each is in the doc and each documented one is in the file.
+  const std::map<std::string, std::string> documented = DocumentedDatasets();
+  ASSERT_GE(documented.size(), 25u);
+  std::set<std::string> listed;
+  std::istringstream ls(Shell("h5ls -r '" + h5 + "'"));
+  std::string line;
+  while (std::getline(ls, line))
+    if (line.find("Dataset") != std::string::npos) listed.insert(line.substr(0, line.find(' ')));
+  ASSERT_FALSE(listed.empty()) << "h5ls -r printed no datasets";
+  for (const auto& name : listed) EXPECT_TRUE(documented.count(name)) << name << " undocumented";
+  for (const auto& [name, unit] : documented) EXPECT_TRUE(listed.count(name)) << name << " missing";
+
+  // The unit attribute of every dataset is the documented one; 13 steps at 257 nodes.
+  const hid_t f = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  for (const auto& [name, unit] : documented)
+    EXPECT_EQ(testing::Hdf5StringAttribute(f, name, "unit"), unit) << name;
+  std::vector<hsize_t> dims;
+  testing::Hdf5Doubles(f, "/profiles/p", &dims);
+  EXPECT_EQ(dims, (std::vector<hsize_t>{13, 257}));
+  EXPECT_EQ(testing::Hdf5Doubles(f, "/cycle/h_c").size(), 13u);
+  EXPECT_EQ(testing::Hdf5StringAttribute(f, "/", "converged"), "true");
+  // /case is the case as run: the reduced keys and the defaults filled in.
+  const std::string case_text = testing::Hdf5Text(f, "/case");
+  EXPECT_NE(case_text.find("grid_points = 257"), std::string::npos) << case_text;
+  EXPECT_NE(case_text.find("time_scheme = \"bdf2\""), std::string::npos) << case_text;
+  H5Fclose(f);
+
+  // The CSV beside it: the /cycle columns with units, one row per step.
+  std::ifstream csv(dir + "/" + stem + "_cycle.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header,
+            "s_m,t_s,R_m,u1_m_s,u2_m_s,um_m_s,SRR,w_n_per_m,h_min_m,h_c_m,p_max_pa,C_RT,C_UT,C_WT");
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, 13);
+
+  // h5py reads it (matplotlib and h5py are Debian packages of the project's set-up).
+  const std::string py = Shell("/usr/bin/python3 -c \"import h5py; f = h5py.File('" + h5 +
+                               "', 'r'); print(f['cycle/h_c'].attrs['unit'], len(f['cycle/s']))\"");
+  EXPECT_EQ(py, "m 13\n");
+}
+
+TEST(MeshCycleResults, KilledRunLeavesNoFileUnderTheFinalName) {
+  const std::string dir = TempDirFor("killed");
+  fs::create_directories(dir);
+  // Long enough to be killed half-way: 400 steps at 257 nodes (about 25 s when not killed).
+  const std::string case_path = ReducedCase("seed004_sae40", Reduced({{"steps", "400"}}));
+  const std::string stem = fs::path(case_path).stem().string();
+  const std::string err = dir + "/stderr.txt";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    std::FILE* e = std::freopen(err.c_str(), "w", stderr);
+    std::FILE* o = std::freopen("/dev/null", "w", stdout);
+    (void)e;
+    (void)o;
+    execl(TEHL_BINARY, "tehl", "run", case_path.c_str(), "-o", dir.c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Wait until the run is under way: the result file is open under its temporary name and a
+  // few steps are done.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  bool midway = false;
+  while (!midway && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    midway = fs::exists(dir + "/" + stem + ".h5.part") &&
+             ReadText(err).find("step 20/400") != std::string::npos;
+  }
+  ASSERT_TRUE(midway) << ReadText(err);
+  ASSERT_EQ(kill(pid, SIGKILL), 0);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  EXPECT_EQ(WTERMSIG(status), SIGKILL);
+  EXPECT_FALSE(fs::exists(dir + "/" + stem + ".h5"));
+  EXPECT_FALSE(fs::exists(dir + "/" + stem + "_cycle.csv"));
+  EXPECT_TRUE(fs::exists(dir + "/" + stem + ".h5.part"));  // what a kill leaves: the temporary
+  EXPECT_EQ(ReadText(err).find("step 400/400"), std::string::npos);  // it was killed half-way
+}
+
+}  // namespace
+}  // namespace tehl
