@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -51,10 +52,14 @@ Row Refine(const MoesPoint& mp) {
     row.n = n;
     row.iterations = sum.iterations;
     if (!sum.usable()) {
+      // A grid too coarse for the point (e.g. M >= 500 on 257 nodes): note it and refine.
       row.usable = false;
-      row.failure = sum.BriefReport();
-      break;
+      row.failure = "n = " + std::to_string(n) + ": " + sum.BriefReport();
+      row.study.emplace_back(n, std::nan(""));
+      if (2 * n - 1 > kMaxNodes) break;
+      continue;
     }
+    row.usable = true;
     row.hc = ms.Hc(st);
     row.hmin = ms.Hmin(st);
     row.study.emplace_back(n, row.hc);
@@ -68,14 +73,16 @@ Row Refine(const MoesPoint& mp) {
 
 }  // namespace
 
-int main() {
+// Optional argument: the smallest M to include (default: all points).
+int main(int argc, char** argv) {
+  const double min_m = argc > 1 ? std::atof(argv[1]) : 0.0;
   const double ls[] = {2, 5, 10, 20};
   const double ms[] = {10, 20, 50, 100, 200, 500, 1000};
   std::vector<Row> rows;
   for (double m : ms)
     for (double l : ls) {
       const MoesPoint mp{m, l};
-      if (mp.Hertz().max_pressure_pa > 2e9) continue;
+      if (mp.Hertz().max_pressure_pa > 2e9 || m < min_m) continue;
       rows.push_back(Refine(mp));
       const Row& r = rows.back();
       std::fprintf(stderr, "M = %g L = %g: n = %d H_c = %.4f (%.1f s)%s\n", m, l, r.n, r.hc,
@@ -101,12 +108,14 @@ int main() {
               "cap of %d nodes; %d failed.\n",
               rows.size(), outside, capped, kMaxNodes, failed);
   for (const Row& r : rows) {
-    if (!r.usable) std::printf("\nM = %g, L = %g failed: %s\n", r.mp.M, r.mp.L, r.failure.c_str());
+    if (!r.failure.empty())
+      std::printf("\nM = %g, L = %g: %s (last failure)\n", r.mp.M, r.mp.L, r.failure.c_str());
     const bool in_band = r.usable && r.hc >= 0.97 * r.mp.PanHamrockHc() &&
                          r.hc <= 1.03 * r.mp.MoesHc();
-    if (in_band && !r.capped) continue;
+    if (in_band && !r.capped && r.failure.empty()) continue;
     std::printf("\nGrid study, M = %g, L = %g:\n\n| n | H_c |\n|---|---|\n", r.mp.M, r.mp.L);
-    for (const auto& [n, hc] : r.study) std::printf("| %d | %.5f |\n", n, hc);
+    for (const auto& [n, hc] : r.study)
+      std::printf(std::isnan(hc) ? "| %d | no convergence |\n" : "| %d | %.5f |\n", n, hc);
   }
   return failed ? 1 : 0;
 }
