@@ -298,6 +298,28 @@ class LineContactSolver::Impl {
     FilmState trial = *s;
     double norm = f.lpNorm<Eigen::Infinity>();
     sum.residual = norm;
+    // Watchdog globalization (Chamberlain, Powell, Lemarechal & Pedersen 1982): a full Newton
+    // step may raise ||F|| for a few iterations while the pressure spike and the cavitation
+    // boundary move. Up to kWatchdog full steps are taken from a checkpoint; if ||F|| has not
+    // fallen below the checkpoint's by then, the iteration returns there and backtracks.
+    constexpr int kWatchdog = 3;
+    int watchdog = 0;
+    bool watchdog_allowed = true;
+    FilmState checkpoint;
+    Eigen::VectorXd f_check, dz_check;
+    double phi_check = 0.0;
+    auto try_step = [&](double lambda, const Eigen::VectorXd& dir, const FilmState& from) {
+      // Projected step: p >= 0 holds at the solution, so negative pressures from a step
+      // that moves the cavitation boundary are set to zero at once (without this the
+      // boundary creeps one node per damped iteration on fine grids).
+      trial.p_pa = from.p_pa;
+      trial.p_pa.segment(1, m) += lambda * sc.p_ref * dir.head(m);
+      trial.p_pa = trial.p_pa.cwiseMax(0.0);
+      trial.h0_m = from.h0_m + lambda * sc.h_ref * dir[m];
+      trial.travel1_m = from.travel1_m;
+      trial.travel2_m = from.travel2_m;
+      return Residual(c, fluid, sc, td, &trial, &f_trial, false);
+    };
     for (int it = 0; it < opt_.max_iterations; ++it) {
       if (norm < opt_.tolerance) break;
       ns.cavitated = cavitated_;
@@ -308,25 +330,37 @@ class LineContactSolver::Impl {
         return Finish(c, s, sum);
       }
       sum.krylov_iterations += linear_->last_krylov_iterations();
-      const double phi0 = f.norm();
+      double phi0 = f.norm();
       double lambda = 1.0;
       bool accepted = false;
-      while (lambda >= opt_.min_step_fraction) {
-        // Projected step: p >= 0 holds at the solution, so negative pressures from a step
-        // that moves the cavitation boundary are set to zero at once (without this the
-        // boundary creeps one node per damped iteration on fine grids).
-        trial.p_pa = s->p_pa;
-        trial.p_pa.segment(1, m) += lambda * sc.p_ref * dz.head(m);
-        trial.p_pa = trial.p_pa.cwiseMax(0.0);
-        trial.h0_m = s->h0_m + lambda * sc.h_ref * dz[m];
-        trial.travel1_m = s->travel1_m;
-        trial.travel2_m = s->travel2_m;
-        if (Residual(c, fluid, sc, td, &trial, &f_trial, false) &&
-            f_trial.norm() <= (1.0 - 1e-4 * lambda) * phi0) {
-          accepted = true;
-          break;
+      const bool full_ok = try_step(1.0, dz, *s);
+      const double phi_full = full_ok ? f_trial.norm() : 0.0;
+      if (full_ok && phi_full <= (1.0 - 1e-4) * phi0) {
+        accepted = true;
+      } else if (full_ok && watchdog_allowed && watchdog < kWatchdog) {
+        if (watchdog == 0) {
+          checkpoint = *s;
+          f_check = f;
+          dz_check = dz;
+          phi_check = phi0;
         }
-        lambda *= 0.5;
+        ++watchdog;
+        accepted = true;
+      } else {
+        if (watchdog > 0) {  // back to the checkpoint, then backtrack along its direction
+          *s = checkpoint;
+          Residual(c, fluid, sc, td, s, &f, true);
+          dz = dz_check;
+          phi0 = phi_check;
+          watchdog = 0;
+          watchdog_allowed = false;
+        }
+        for (lambda = 0.5; lambda >= opt_.min_step_fraction; lambda *= 0.5) {
+          if (try_step(lambda, dz, *s) && f_trial.norm() <= (1.0 - 1e-4 * lambda) * phi0) {
+            accepted = true;
+            break;
+          }
+        }
       }
       if (!accepted) {
         sum.iterations = it;
@@ -340,6 +374,12 @@ class LineContactSolver::Impl {
       s->h0_m = trial.h0_m;
       Residual(c, fluid, sc, td, s, &f, true);
       norm = f.lpNorm<Eigen::Infinity>();
+      if (watchdog > 0 && f.norm() <= (1.0 - 1e-4) * phi_check) {
+        watchdog = 0;  // the full steps paid off
+        watchdog_allowed = true;
+      } else if (watchdog == 0 && lambda < 1.0) {
+        watchdog_allowed = true;  // a damped step was taken: full steps may be tried again
+      }
       IterationRecord rec;
       rec.residual = norm;
       rec.step = lambda;
