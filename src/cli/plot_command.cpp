@@ -36,8 +36,9 @@ Command AddPlotCommand(CLI::App& app) {
             }
             const std::string script = internal::FindScript("plot_cycle.py");
             if (script.empty()) {
-              std::fprintf(stderr, "tehl plot: scripts/plot_cycle.py not found (set "
-                                   "TEHL_SCRIPT_DIR)\n");
+              std::fprintf(stderr,
+                           "tehl plot: scripts/plot_cycle.py not found (set "
+                           "TEHL_SCRIPT_DIR)\n");
               return kExitInternal;
             }
             std::string out = args->output_dir;

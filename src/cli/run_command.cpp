@@ -23,9 +23,8 @@ int RunGear(const RunArgs& a) {
   o.output_dir = a.output_dir;
   const MeshCycleResult r = RunMeshCycle(a.case_path, o);
   const MeshCycleStep& pitch = r.steps[r.PitchStep()];
-  std::printf("mesh cycle A..E: %zu of %d steps (%s), grid %zu nodes, %.1f s\n",
-              r.steps.size() - 1, r.planned_steps, r.step_rule.c_str(), r.x_m.size(),
-              r.wall_time_s);
+  std::printf("mesh cycle A..E: %zu of %d steps (%s), grid %zu nodes, %.1f s\n", r.steps.size() - 1,
+              r.planned_steps, r.step_rule.c_str(), r.x_m.size(), r.wall_time_s);
   std::printf("at the pitch point (s = %.4g mm): h_c = %.6g m, h_min = %.6g m, p_max = %.6g Pa\n",
               pitch.s_m * 1e3, pitch.h_c_m, pitch.h_min_m, pitch.p_max_pa);
   std::printf("wrote %s%s%s\n", r.hdf5_path.c_str(), r.csv_path.empty() ? "" : " and ",

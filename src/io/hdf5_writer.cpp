@@ -76,8 +76,7 @@ class Hdf5Writer::Impl {
     while ((pos = dataset.find('/', pos)) != std::string::npos) {
       const std::string group = dataset.substr(0, pos);
       if (H5Lexists(file, group.c_str(), H5P_DEFAULT) <= 0) {
-        Handle g(H5Gcreate2(file, group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                 H5Gclose);
+        Handle g(H5Gcreate2(file, group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
         if (!g.ok()) Fail("cannot create group " + group);
       }
       ++pos;
@@ -88,14 +87,19 @@ class Hdf5Writer::Impl {
     if (file < 0) Fail("the file " + final_path + " is already committed or closed");
   }
 
-  void WriteNumeric(const std::string& dataset, const void* data, hid_t mem_type, hid_t file_type,
-                    int rank, const hsize_t* dims, const std::string& unit,
+  void WriteNumeric(const std::string& dataset,
+                    const void* data,
+                    hid_t mem_type,
+                    hid_t file_type,
+                    int rank,
+                    const hsize_t* dims,
+                    const std::string& unit,
                     const std::string& meaning) {
     Require();
     MakeParents(dataset);
     Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
-    Handle set(H5Dcreate2(file, dataset.c_str(), file_type, space.get(), H5P_DEFAULT,
-                          H5P_DEFAULT, H5P_DEFAULT),
+    Handle set(H5Dcreate2(file, dataset.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                          H5P_DEFAULT),
                H5Dclose);
     if (!set.ok()) Fail("cannot create dataset " + dataset);
     bool empty = false;
@@ -124,34 +128,40 @@ Hdf5Writer::~Hdf5Writer() {
   }
 }
 
-void Hdf5Writer::WriteVector(const std::string& dataset, const std::vector<double>& values,
-                             const std::string& unit, const std::string& meaning) {
+void Hdf5Writer::WriteVector(const std::string& dataset,
+                             const std::vector<double>& values,
+                             const std::string& unit,
+                             const std::string& meaning) {
   CheckFinite(dataset, values);
   const hsize_t dims[1] = {values.size()};
   impl_->WriteNumeric(dataset, values.data(), H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, 1, dims, unit,
                       meaning);
 }
 
-void Hdf5Writer::WriteMatrix(const std::string& dataset, const std::vector<double>& row_major,
-                             int rows, int cols, const std::string& unit,
+void Hdf5Writer::WriteMatrix(const std::string& dataset,
+                             const std::vector<double>& row_major,
+                             int rows,
+                             int cols,
+                             const std::string& unit,
                              const std::string& meaning) {
   if (rows < 0 || cols < 0 || row_major.size() != static_cast<size_t>(rows) * cols)
-    Fail(dataset + ": " + std::to_string(row_major.size()) + " values for " +
-         std::to_string(rows) + " x " + std::to_string(cols));
+    Fail(dataset + ": " + std::to_string(row_major.size()) + " values for " + std::to_string(rows) +
+         " x " + std::to_string(cols));
   CheckFinite(dataset, row_major);
   const hsize_t dims[2] = {static_cast<hsize_t>(rows), static_cast<hsize_t>(cols)};
   impl_->WriteNumeric(dataset, row_major.data(), H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, 2, dims, unit,
                       meaning);
 }
 
-void Hdf5Writer::WriteInts(const std::string& dataset, const std::vector<int>& values,
+void Hdf5Writer::WriteInts(const std::string& dataset,
+                           const std::vector<int>& values,
                            const std::string& meaning) {
   const hsize_t dims[1] = {values.size()};
-  impl_->WriteNumeric(dataset, values.data(), H5T_NATIVE_INT, H5T_STD_I32LE, 1, dims, "-",
-                      meaning);
+  impl_->WriteNumeric(dataset, values.data(), H5T_NATIVE_INT, H5T_STD_I32LE, 1, dims, "-", meaning);
 }
 
-void Hdf5Writer::WriteStrings(const std::string& dataset, const std::vector<std::string>& values,
+void Hdf5Writer::WriteStrings(const std::string& dataset,
+                              const std::vector<std::string>& values,
                               const std::string& meaning) {
   impl_->Require();
   impl_->MakeParents(dataset);
@@ -171,7 +181,8 @@ void Hdf5Writer::WriteStrings(const std::string& dataset, const std::vector<std:
   WriteStringAttribute(set.get(), "meaning", meaning);
 }
 
-void Hdf5Writer::WriteText(const std::string& dataset, const std::string& text,
+void Hdf5Writer::WriteText(const std::string& dataset,
+                           const std::string& text,
                            const std::string& meaning) {
   impl_->Require();
   impl_->MakeParents(dataset);
@@ -187,7 +198,8 @@ void Hdf5Writer::WriteText(const std::string& dataset, const std::string& text,
   WriteStringAttribute(set.get(), "meaning", meaning);
 }
 
-void Hdf5Writer::SetAttribute(const std::string& object, const std::string& name,
+void Hdf5Writer::SetAttribute(const std::string& object,
+                              const std::string& name,
                               const std::string& value) {
   impl_->Require();
   Handle obj(H5Oopen(impl_->file, object.c_str(), H5P_DEFAULT), H5Oclose);
@@ -195,7 +207,9 @@ void Hdf5Writer::SetAttribute(const std::string& object, const std::string& name
   WriteStringAttribute(obj.get(), name, value);
 }
 
-void Hdf5Writer::SetAttribute(const std::string& object, const std::string& name, double value,
+void Hdf5Writer::SetAttribute(const std::string& object,
+                              const std::string& name,
+                              double value,
                               const std::string& unit) {
   CheckFinite(object + "@" + name, {value});
   impl_->Require();
@@ -203,9 +217,9 @@ void Hdf5Writer::SetAttribute(const std::string& object, const std::string& name
   if (!obj.ok()) Fail("no object " + object + " for attribute " + name);
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
   if (H5Aexists(obj.get(), name.c_str()) > 0) H5Adelete(obj.get(), name.c_str());
-  Handle attr(H5Acreate2(obj.get(), name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
-                         H5P_DEFAULT),
-              H5Aclose);
+  Handle attr(
+      H5Acreate2(obj.get(), name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+      H5Aclose);
   if (!attr.ok() || H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value) < 0)
     Fail("cannot write attribute " + name);
   WriteStringAttribute(obj.get(), name + "_unit", unit);
@@ -219,8 +233,8 @@ void Hdf5Writer::Commit() {
   if (!flushed || !closed) Fail("cannot close " + temporary_path());
   std::error_code ec;
   fs::rename(temporary_path(), impl_->final_path, ec);
-  if (ec) Fail("cannot rename " + temporary_path() + " to " + impl_->final_path + ": " +
-               ec.message());
+  if (ec)
+    Fail("cannot rename " + temporary_path() + " to " + impl_->final_path + ": " + ec.message());
   impl_->committed = true;
 }
 

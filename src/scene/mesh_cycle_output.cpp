@@ -19,18 +19,21 @@ const std::vector<CycleColumn>& CycleColumns() {
   static const std::vector<CycleColumn> cols = {
       {"s", "m", "distance of the contact from A along the line of action",
        [](const MeshCycleStep& k) { return k.s_m; }},
-      {"t", "s", "time since A, t = s / (r_b1 w1)", [](const MeshCycleStep& k) { return k.time_s; }},
+      {"t", "s", "time since A, t = s / (r_b1 w1)",
+       [](const MeshCycleStep& k) { return k.time_s; }},
       {"R", "m", "reduced radius of curvature, 1/R = 1/rho1 + 1/rho2",
        [](const MeshCycleStep& k) { return k.reduced_radius_m; }},
       {"u1", "m/s", "pinion surface speed", [](const MeshCycleStep& k) { return k.u1_m_s; }},
       {"u2", "m/s", "wheel surface speed", [](const MeshCycleStep& k) { return k.u2_m_s; }},
       {"um", "m/s", "entrainment speed (u1 + u2)/2",
        [](const MeshCycleStep& k) { return k.um_m_s; }},
-      {"SRR", "-", "slide-to-roll ratio (u1 - u2)/um", [](const MeshCycleStep& k) { return k.srr; }},
+      {"SRR", "-", "slide-to-roll ratio (u1 - u2)/um",
+       [](const MeshCycleStep& k) { return k.srr; }},
       {"w", "N/m", "load per unit face width on the tracked pair",
        [](const MeshCycleStep& k) { return k.load_n_per_m; }},
       {"h_min", "m", "minimum film thickness", [](const MeshCycleStep& k) { return k.h_min_m; }},
-      {"h_c", "m", "central film thickness (x = 0)", [](const MeshCycleStep& k) { return k.h_c_m; }},
+      {"h_c", "m", "central film thickness (x = 0)",
+       [](const MeshCycleStep& k) { return k.h_c_m; }},
       {"p_max", "Pa", "maximum film pressure", [](const MeshCycleStep& k) { return k.p_max_pa; }},
       {"C_RT", "-", "R / R0, R0 at the pitch point (seed 004 Fig. 3)",
        [](const MeshCycleStep& k) { return k.c_rt; }},
@@ -56,7 +59,8 @@ std::vector<double> Flatten(const std::vector<std::vector<double>>& rows) {
 
 }  // namespace
 
-std::unique_ptr<Hdf5Writer> BeginMeshCycleHdf5(const std::string& path, const Document& doc,
+std::unique_ptr<Hdf5Writer> BeginMeshCycleHdf5(const std::string& path,
+                                               const Document& doc,
                                                const std::string& case_path) {
   auto h5 = std::make_unique<Hdf5Writer>(path);
   h5->SetAttribute("/", "program", "tehl 0.1.0");
@@ -96,8 +100,7 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
     const int cols = static_cast<int>(r.x_m.size());
     h5.WriteMatrix("/profiles/p", Flatten(r.p_pa), rows, cols, "Pa",
                    "film pressure over (step, x)");
-    h5.WriteMatrix("/profiles/h", Flatten(r.h_m), rows, cols, "m",
-                   "film thickness over (step, x)");
+    h5.WriteMatrix("/profiles/h", Flatten(r.h_m), rows, cols, "m", "film thickness over (step, x)");
   }
 
   std::vector<std::string> termination, message;

@@ -13,7 +13,8 @@ namespace tehl::internal {
 
 // Opens `path` for writing (as `path`.part, Hdf5Writer) before the run and writes the root
 // attributes that are known then and /case.
-std::unique_ptr<Hdf5Writer> BeginMeshCycleHdf5(const std::string& path, const Document& doc,
+std::unique_ptr<Hdf5Writer> BeginMeshCycleHdf5(const std::string& path,
+                                               const Document& doc,
                                                const std::string& case_path);
 // Writes /cycle, /profiles (p and h when `profiles`), /solver and commits the file.
 void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles);

@@ -33,7 +33,8 @@ struct PathState {
 class CyclePath {
  public:
   explicit CyclePath(const internal::GearCase& c)
-      : gear_(c), path_(*c.pair, c.operating.pinion_speed_rad_s),
+      : gear_(c),
+        path_(*c.pair, c.operating.pinion_speed_rad_s),
         w_nominal_(NominalToothLoad(*c.pair, c.operating).load_per_width_n_per_m) {}
 
   const PathOfContact& path() const { return path_; }
@@ -41,8 +42,10 @@ class CyclePath {
   PathState At(double s, bool left) const {
     const double nudge = 1e-9 * path_.length_m();
     double q = s;
-    if (left && s > nudge) q = s - nudge;
-    else if (!left && s < path_.length_m() - nudge) q = s + nudge;
+    if (left && s > nudge)
+      q = s - nudge;
+    else if (!left && s < path_.length_m() - nudge)
+      q = s + nudge;
     PathState st;
     st.contact = path_.At(s);
     st.contact.pairs_in_contact = path_.At(q).pairs_in_contact;
@@ -89,8 +92,8 @@ int MeshCycleResult::PitchStep() const {
   return best;
 }
 
-std::vector<double> MeshCycleStepPositions(double g, double sb, double sd, int steps,
-                                           const std::vector<int>& min_per_segment) {
+std::vector<double> MeshCycleStepPositions(
+    double g, double sb, double sd, int steps, const std::vector<int>& min_per_segment) {
   const std::vector<double> ends = SegmentEnds(g, sb, sd);
   const size_t m = ends.size();
   std::vector<double> len(m);
@@ -162,12 +165,11 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
           LineContactHertz(st.load_n_per_m, st.contact.reduced_radius_m, e_prime).half_width_m;
       r.max_half_width_m = std::max(r.max_half_width_m, b);
       um_max = std::max(um_max, st.contact.um_m_s);
-      if (left && i > 0)
-        transits += st.contact.um_m_s / b * (path.duration_s() / samples);
+      if (left && i > 0) transits += st.contact.um_m_s / b * (path.duration_s() / samples);
     }
   }
-  const UniformGrid grid = UniformGrid::AroundHertz(r.max_half_width_m, film.grid_points,
-                                                    film.x_start_b, film.x_end_b);
+  const UniformGrid grid =
+      UniformGrid::AroundHertz(r.max_half_width_m, film.grid_points, film.x_start_b, film.x_end_b);
 
   // Step count: the user's, or automatic; with roughness at least dt <= dx/um per segment.
   const long long user_steps = doc.Int("numerics", "steps");
@@ -178,8 +180,7 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
     double a = 0;
     for (double e : SegmentEnds(r.length_m, r.s_b_m, r.s_d_m)) {
       double um_seg = 0;
-      for (int i = 0; i <= 50; ++i)
-        um_seg = std::max(um_seg, path.At(a + (e - a) * i / 50).um_m_s);
+      for (int i = 0; i <= 50; ++i) um_seg = std::max(um_seg, path.At(a + (e - a) * i / 50).um_m_s);
       const int need = static_cast<int>(
           std::ceil((e - a) / path.contact_speed_m_s() * um_seg / grid.dx_m() - 1e-9));
       min_seg.push_back(std::max(need, 1));

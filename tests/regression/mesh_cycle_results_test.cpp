@@ -117,17 +117,17 @@ TEST(MeshCycleResults, PlotWritesTheThreeFiguresAndRejectsAMissingFile) {
   ASSERT_EQ(std::system((tehl + " run -q '" + case_path + "' -o '" + dir + "' >/dev/null").c_str()),
             0);
   const std::string stem = fs::path(case_path).stem().string();
-  ASSERT_EQ(std::system((tehl + " plot '" + dir + "/" + stem + ".h5' -o '" + dir +
-                         "/png' >/dev/null").c_str()),
-            0);
+  ASSERT_EQ(
+      std::system(
+          (tehl + " plot '" + dir + "/" + stem + ".h5' -o '" + dir + "/png' >/dev/null").c_str()),
+      0);
   for (const char* fig : {"_cycle.png", "_profiles.png", "_path.png"}) {
     const fs::path png = fs::path(dir) / "png" / (stem + fig);
     ASSERT_TRUE(fs::exists(png)) << png;
     EXPECT_GT(fs::file_size(png), 10000u) << png;
     EXPECT_EQ(ReadText(png.string()).substr(1, 3), "PNG") << png;
   }
-  const int status =
-      std::system((tehl + " plot '" + dir + "/missing.h5' >/dev/null 2>&1").c_str());
+  const int status = std::system((tehl + " plot '" + dir + "/missing.h5' >/dev/null 2>&1").c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);
 }

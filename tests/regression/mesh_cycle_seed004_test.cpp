@@ -79,9 +79,8 @@ TEST(MeshCycleSeed004, Sae90GivesThickerFilmThanSae40) {
 TEST(MeshCycleSeed004, HigherSpeedThickensTheFilm) {
   // Seed 004 trend 5, at the same torque T1 = 95.49 N m: 1500 rpm needs P = T1 w1 = 15 kW.
   const MeshCycleResult slow = RunReduced("seed004_sae40");
-  const MeshCycleResult fast =
-      RunReduced("seed004_sae40", Reduced({{"pinion_speed_rpm", "1500.0"},
-                                           {"power_w", "15000.0"}}));
+  const MeshCycleResult fast = RunReduced(
+      "seed004_sae40", Reduced({{"pinion_speed_rpm", "1500.0"}, {"power_w", "15000.0"}}));
   ASSERT_TRUE(fast.converged());
   EXPECT_NEAR(fast.w0_n_per_m, slow.w0_n_per_m, 1e-6 * slow.w0_n_per_m);  // same load
   EXPECT_GT(PitchCentralFilm(fast), PitchCentralFilm(slow));

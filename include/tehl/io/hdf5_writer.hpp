@@ -30,23 +30,33 @@ class Hdf5Writer {
 
   // Dataset paths are absolute ("/cycle/h_min"); missing groups are created.
   // A 1-D array of doubles with its unit and meaning.
-  void WriteVector(const std::string& dataset, const std::vector<double>& values,
-                   const std::string& unit, const std::string& meaning);
+  void WriteVector(const std::string& dataset,
+                   const std::vector<double>& values,
+                   const std::string& unit,
+                   const std::string& meaning);
   // A 2-D array, row-major (rows x cols), e.g. p over (step, x).
-  void WriteMatrix(const std::string& dataset, const std::vector<double>& row_major, int rows,
-                   int cols, const std::string& unit, const std::string& meaning);
+  void WriteMatrix(const std::string& dataset,
+                   const std::vector<double>& row_major,
+                   int rows,
+                   int cols,
+                   const std::string& unit,
+                   const std::string& meaning);
   // A 1-D array of integers (counts; unit "-").
-  void WriteInts(const std::string& dataset, const std::vector<int>& values,
+  void WriteInts(const std::string& dataset,
+                 const std::vector<int>& values,
                  const std::string& meaning);
   // A 1-D array of variable-length UTF-8 strings.
-  void WriteStrings(const std::string& dataset, const std::vector<std::string>& values,
+  void WriteStrings(const std::string& dataset,
+                    const std::vector<std::string>& values,
                     const std::string& meaning);
   // A scalar variable-length string (e.g. the case text).
   void WriteText(const std::string& dataset, const std::string& text, const std::string& meaning);
   // A string attribute on a group or dataset that exists ("/" for the file).
   void SetAttribute(const std::string& object, const std::string& name, const std::string& value);
   // A double attribute with its unit in the attribute `<name>_unit`.
-  void SetAttribute(const std::string& object, const std::string& name, double value,
+  void SetAttribute(const std::string& object,
+                    const std::string& name,
+                    double value,
                     const std::string& unit);
 
   // Flushes, closes and renames `<final_path>.part` to `<final_path>`. Throws

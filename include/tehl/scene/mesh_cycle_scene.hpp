@@ -29,41 +29,43 @@ struct MeshCycleRunOptions {
 };
 
 struct MeshCycleStep {
-  double s_m = 0;                 // distance from A along the line of action [m]
-  double time_s = 0;              // t = s / (r_b1 w1) since A [s]
-  double reduced_radius_m = 0;    // R [m]
-  double u1_m_s = 0, u2_m_s = 0;  // pinion and wheel surface speeds [m/s]
-  double um_m_s = 0;              // entrainment speed (u1 + u2)/2 [m/s]
-  double srr = 0;                 // slide-to-roll ratio (u1 - u2)/um [-]
-  double load_n_per_m = 0;        // w of the tracked pair [N/m]
-  int pairs_in_contact = 0;       // tooth pairs sharing the load [-]
-  double h_min_m = 0, h_c_m = 0;  // minimum and central (x = 0) film [m]
-  double p_max_pa = 0;            // [Pa]
+  double s_m = 0;                       // distance from A along the line of action [m]
+  double time_s = 0;                    // t = s / (r_b1 w1) since A [s]
+  double reduced_radius_m = 0;          // R [m]
+  double u1_m_s = 0, u2_m_s = 0;        // pinion and wheel surface speeds [m/s]
+  double um_m_s = 0;                    // entrainment speed (u1 + u2)/2 [m/s]
+  double srr = 0;                       // slide-to-roll ratio (u1 - u2)/um [-]
+  double load_n_per_m = 0;              // w of the tracked pair [N/m]
+  int pairs_in_contact = 0;             // tooth pairs sharing the load [-]
+  double h_min_m = 0, h_c_m = 0;        // minimum and central (x = 0) film [m]
+  double p_max_pa = 0;                  // [Pa]
   double c_rt = 0, c_ut = 0, c_wt = 0;  // R/R0, um/u0, w/w0 (seed 004 Fig. 3) [-]
-  std::string zone;               // "A-B", "B-D" or "D-E" (the segment the step ends in)
+  std::string zone;                     // "A-B", "B-D" or "D-E" (the segment the step ends in)
   LineContactSolver::Summary summary;
 };
 
 struct MeshCycleResult {
-  std::vector<MeshCycleStep> steps;  // steps[0]: the steady film at A; then one per step
-  std::vector<double> x_m;           // grid nodes [m]
-  std::vector<std::vector<double>> p_pa, h_m;  // profiles per step over x [Pa], [m]
-  double length_m = 0;               // g_alpha, A to E [m]
-  double s_b_m = 0, s_c_m = 0, s_d_m = 0;  // B, pitch point C, D from A [m]
+  std::vector<MeshCycleStep> steps;             // steps[0]: the steady film at A; then one per step
+  std::vector<double> x_m;                      // grid nodes [m]
+  std::vector<std::vector<double>> p_pa, h_m;   // profiles per step over x [Pa], [m]
+  double length_m = 0;                          // g_alpha, A to E [m]
+  double s_b_m = 0, s_c_m = 0, s_d_m = 0;       // B, pitch point C, D from A [m]
   double r0_m = 0, u0_m_s = 0, w0_n_per_m = 0;  // R, um and w at C [m], [m/s], [N/m]
-  double max_half_width_m = 0;       // b_max, sets the grid [m]
-  int planned_steps = 0;             // steps from A to E [-]
-  std::string step_rule;             // how the step count was chosen
-  double wall_time_s = 0;            // whole run [s]
-  std::string hdf5_path, csv_path;   // written files ("" when not written)
-  bool converged() const;            // every planned step solved and usable
-  int PitchStep() const;             // index of the step nearest to C
+  double max_half_width_m = 0;                  // b_max, sets the grid [m]
+  int planned_steps = 0;                        // steps from A to E [-]
+  std::string step_rule;                        // how the step count was chosen
+  double wall_time_s = 0;                       // whole run [s]
+  std::string hdf5_path, csv_path;              // written files ("" when not written)
+  bool converged() const;                       // every planned step solved and usable
+  int PitchStep() const;                        // index of the step nearest to C
 };
 
 // Step ends s_1..s_N in (0, g], uniform within each of the segments [0, s_b], [s_b, s_d],
 // [s_d, g] (switch points outside (0, g) are skipped), `steps` in all, each segment at least
 // `min_per_segment[i]` (and 1) steps; so B and D are step ends exactly. Returns s_0 = 0 first.
-std::vector<double> MeshCycleStepPositions(double length_m, double s_b_m, double s_d_m,
+std::vector<double> MeshCycleStepPositions(double length_m,
+                                           double s_b_m,
+                                           double s_d_m,
                                            int steps,
                                            const std::vector<int>& min_per_segment = {});
 

@@ -34,7 +34,8 @@ TEST(CsvTable, WritesHeaderAndRows) {
 }
 
 TEST(CsvTable, NonFiniteValueIsRefusedAndNothingIsWritten) {
-  const std::string path = ::testing::TempDir() + "/tehl_csv_nan_" + std::to_string(getpid()) + ".csv";
+  const std::string path =
+      ::testing::TempDir() + "/tehl_csv_nan_" + std::to_string(getpid()) + ".csv";
   fs::remove(path);
   try {
     WriteCsvTable(path, {{"p_max_pa", {1.0, std::numeric_limits<double>::infinity()}}});

@@ -16,7 +16,8 @@ inline bool Hdf5Exists(hid_t file, const std::string& path) {
   return H5Lexists(file, path.c_str(), H5P_DEFAULT) > 0;
 }
 
-inline std::vector<double> Hdf5Doubles(hid_t file, const std::string& path,
+inline std::vector<double> Hdf5Doubles(hid_t file,
+                                       const std::string& path,
                                        std::vector<hsize_t>* dims = nullptr) {
   const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
   if (set < 0) return {};
@@ -35,11 +36,11 @@ inline std::vector<double> Hdf5Doubles(hid_t file, const std::string& path,
 }
 
 // A variable-length string attribute of an object ("" when absent).
-inline std::string Hdf5StringAttribute(hid_t file, const std::string& object,
+inline std::string Hdf5StringAttribute(hid_t file,
+                                       const std::string& object,
                                        const std::string& name) {
   if (H5Aexists_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT) <= 0) return "";
-  const hid_t attr = H5Aopen_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT,
-                                     H5P_DEFAULT);
+  const hid_t attr = H5Aopen_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
   const hid_t type = H5Aget_type(attr);
   char* value = nullptr;
   std::string out;
