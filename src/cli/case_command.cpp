@@ -4,6 +4,8 @@
 
 #include "cli/commands.hpp"
 #include "scene/case_reader.hpp"
+#include "scene/film_case.hpp"
+#include "scene/gear_case.hpp"
 #include "tehl/scene/case_schema.hpp"
 
 namespace tehl::cli {
@@ -24,7 +26,12 @@ Command AddCaseCommand(CLI::App& app) {
             if (args->print_default) std::cout << CaseDefaultsText();
             ProblemList all;
             for (const auto& path : args->check) {
-              const internal::Document doc = internal::ReadCaseDocument(path);
+              // The same readers as a run: schema, cross-key rules, gear geometry, film inputs.
+              internal::Document doc = internal::ReadCaseDocument(path);
+              if (doc.problems().empty()) {
+                if (doc.HasSection("gear")) internal::ReadGearCase(doc);
+                internal::ReadFilmCase(doc);
+              }
               if (doc.problems().empty()) std::cout << path << ": ok\n";
               all.Append(doc.problems());
             }
