@@ -32,15 +32,16 @@ std::string ToString(LinearSolverKind k) {
     case LinearSolverKind::kAuto: return "auto";
     case LinearSolverKind::kDense: return "dense";
     case LinearSolverKind::kNewtonKrylov: return "newton_krylov";
+    case LinearSolverKind::kReusedLu: return "reused_lu";
   }
   return "?";
 }
 LinearSolverKind LinearSolverKindFromString(const std::string& s) {
   for (auto k : {LinearSolverKind::kAuto, LinearSolverKind::kDense,
-                 LinearSolverKind::kNewtonKrylov})
+                 LinearSolverKind::kNewtonKrylov, LinearSolverKind::kReusedLu})
     if (ToString(k) == s) return k;
   throw InputError(InputProblem{"", 0, "linear_solver", "\"" + s + "\"", "unknown solver",
-                                "auto, dense, newton_krylov"});
+                                "auto, dense, newton_krylov, reused_lu"});
 }
 std::string ToString(TimeScheme s) { return s == TimeScheme::kBdf1 ? "bdf1" : "bdf2"; }
 TimeScheme TimeSchemeFromString(const std::string& s) {
@@ -92,6 +93,7 @@ std::vector<std::string> LineContactSolver::Options::Validate() const {
   rule(dense_max_nodes >= 5, "dense_max_nodes", dense_max_nodes, ">= 5");
   rule(gmres_restart >= 2, "gmres_restart", gmres_restart, ">= 2");
   rule(gmres_max_iterations >= 1, "gmres_max_iterations", gmres_max_iterations, ">= 1");
+  rule(reused_lu_max_gmres >= 1, "reused_lu_max_gmres", reused_lu_max_gmres, ">= 1");
   rule(preconditioner_band >= 0, "preconditioner_band", preconditioner_band, ">= 0");
   rule(max_continuation_stages >= 0, "max_continuation_stages", max_continuation_stages, ">= 0");
   rule(min_step_fraction > 0 && min_step_fraction <= 1, "min_step_fraction", min_step_fraction,
@@ -129,10 +131,15 @@ class LineContactSolver::Impl {
     for (int i = 0; i < n; ++i) x2_[i] = 0.5 * grid.x(i) * grid.x(i);
     if (eff.elastic) elastic_.emplace(n, grid.dx_m(), e_prime);
     if (eff.roughness) heights_.setZero(n);
-    const bool dense = opt.linear_solver == LinearSolverKind::kDense ||
-                       (opt.linear_solver == LinearSolverKind::kAuto && n <= opt.dense_max_nodes);
-    if (dense) {
+    const bool small = n <= opt.dense_max_nodes;
+    if (opt.linear_solver == LinearSolverKind::kDense) {
       linear_ = internal::MakeDenseLuSolver();
+    } else if (opt.linear_solver == LinearSolverKind::kReusedLu ||
+               (opt.linear_solver == LinearSolverKind::kAuto && small)) {
+      internal::KrylovSettings k;
+      k.restart = opt.gmres_restart;
+      k.max_iterations = opt.reused_lu_max_gmres;
+      linear_ = internal::MakeReusedLuSolver(k);
     } else {
       internal::KrylovSettings k;
       k.restart = opt.gmres_restart;

@@ -62,5 +62,8 @@ struct KrylovSettings {
   double relative_tolerance = 1e-10;
 };
 std::unique_ptr<NewtonLinearSolver> MakeNewtonKrylovSolver(const KrylovSettings& settings);
+// GMRES preconditioned by the dense LU of an earlier Jacobian, refactorized when GMRES needs
+// more than settings.max_iterations.
+std::unique_ptr<NewtonLinearSolver> MakeReusedLuSolver(const KrylovSettings& settings);
 
 }  // namespace tehl::internal

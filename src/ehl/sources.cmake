@@ -6,6 +6,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/newton_system.cpp
   src/ehl/gmres.cpp
   src/ehl/newton_krylov_solver.cpp
+  src/ehl/reused_lu_solver.cpp
   src/ehl/line_contact_solver.cpp
   src/ehl/elastic_deflection.cpp
   src/ehl/surface_roughness.cpp

@@ -117,7 +117,7 @@ SectionSpec NumericsSection() {
     Integer("upwind_order", "-", "2", "order of the Couette (wedge) term upwinding", 1.0, 2.0),
     Text("time_scheme", "\"bdf2\"", "time discretization of d(rho h)/dt", {"bdf1", "bdf2"}),
     Text("linear_solver", "\"auto\"", "Newton linear solver",
-         {"auto", "dense", "newton_krylov"}),
+         {"auto", "dense", "newton_krylov", "reused_lu"}),
     Positive("newton_tolerance", "-", "1e-8", "relative residual at which Newton stops"),
     Integer("max_newton_iterations", "-", "100", "Newton iterations per solve", 1.0, 10000.0),
     Integer("film_nodes", "-", "11", "nodes across the film for the energy equation", 3.0, 201.0),

@@ -26,7 +26,11 @@ namespace tehl {
 class Lubricant;
 class SurfaceShape;
 
-enum class LinearSolverKind { kAuto, kDense, kNewtonKrylov };
+// kDense: a fresh dense LU per Newton iteration (the reference). kNewtonKrylov: GMRES with a
+// band-LU preconditioner. kReusedLu: GMRES preconditioned by the dense LU of an earlier
+// Jacobian, refactorized only when GMRES needs more than reused_lu_max_gmres iterations.
+// kAuto: kReusedLu up to dense_max_nodes, kNewtonKrylov above.
+enum class LinearSolverKind { kAuto, kDense, kNewtonKrylov, kReusedLu };
 std::string ToString(LinearSolverKind k);
 LinearSolverKind LinearSolverKindFromString(const std::string& s);  // throws InputError
 
@@ -71,6 +75,7 @@ class LineContactSolver {
     int max_iterations = 100;         // Newton iterations per solve [-]
     int gmres_restart = 60;           // Krylov vectors before a restart [-]
     int gmres_max_iterations = 400;   // per Newton step [-]
+    int reused_lu_max_gmres = 20;     // kReusedLu refactorizes beyond this [-]
     int preconditioner_band = 24;     // half-band of the elastic matrix in the preconditioner [-]
     int max_continuation_stages = 12; // load / pressure-viscosity continuation stages [-]
     int coarse_grid_nodes = 129;      // grid sequencing halves the grid down to this [-]
@@ -96,7 +101,7 @@ class LineContactSolver {
     double residual = -1;           // final scaled residual max-norm [-]
     double load_error = -1;         // |integral p dx - w| / w [-]
     double wall_time_s = 0;         // [s]
-    std::string linear_solver;      // "dense" or "newton_krylov"
+    std::string linear_solver;      // "dense", "newton_krylov" or "reused_lu"
     int substeps = 1;               // time substeps a transient Step needed [-]
     std::vector<IterationRecord> history;
     bool usable() const { return termination == Termination::kConverged; }
