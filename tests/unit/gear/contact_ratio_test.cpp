@@ -44,12 +44,7 @@ TEST(ContactRatio, InternalPairMatchesHandCalculation) {
   // sqrt(88^2 - r_b2^2) = 24.32118 mm, p_b = 3 pi cos 20 = 8.85639 mm,
   // eps_alpha = (17.15459 - 24.32118 + 20.52121) / 8.85639 = 1.50791;
   // A lies 24.32118 - 20.52121 = 3.79998 mm beyond T1.
-  GearPairSpec s = testing::Seed004Spec();
-  s.internal = true;
-  s.pinion.teeth = 20;
-  s.wheel.teeth = 60;
-  s.module_m = 3e-3;
-  s.wheel.tip_radius_m = 88e-3;
+  const GearPairSpec s = testing::InternalSpec();
   const GearPair p(s);
   EXPECT_NEAR(p.line(Flank::kDrive).contact_ratio, 1.50791, 0.5e-5);
   EXPECT_NEAR(p.line(Flank::kDrive).a_m, 3.79998e-3, 0.5e-8);

@@ -83,12 +83,7 @@ TEST(PathOfContact, KinematicIdentitiesHoldAlongThePath) {
 TEST(PathOfContact, InternalIdentities) {
   // Ring: rho2 = T1T2 + rho1 (T2 behind T1), 1/R = 1/rho1 - 1/rho2, and
   // u1 - u2 = (w1 - w2)(P - C) since both turn the same way.
-  GearPairSpec s = testing::Seed004Spec();
-  s.internal = true;
-  s.pinion.teeth = 20;
-  s.wheel.teeth = 60;
-  s.module_m = 3e-3;
-  s.wheel.tip_radius_m = 88e-3;
+  const GearPairSpec s = testing::InternalSpec();
   const GearPair pair(s);
   const double w1 = 100.0;
   const PathOfContact path(pair, w1);

@@ -21,6 +21,19 @@ inline GearPairSpec Seed004Spec() {
   return s;
 }
 
+// An internal pair for hand calculations (contact_ratio_test.cpp works it out): pinion
+// z1 = 20 in a ring z2 = 60, m = 3 mm, 20 deg, no shift, ring tip radius 88 mm (ring
+// addendum shortened to 2 mm so its tip stays clear of the pinion's fillet).
+inline GearPairSpec InternalSpec() {
+  GearPairSpec s = Seed004Spec();
+  s.internal = true;
+  s.pinion.teeth = 20;
+  s.wheel.teeth = 60;
+  s.module_m = 3e-3;
+  s.wheel.tip_radius_m = 88e-3;
+  return s;
+}
+
 // FZG type C (ISO 14635-1, VALIDATION.md section 5): 16/24, m = 4.5 mm, 20 deg,
 // x = 0.1817/0.1715, a = 91.5 mm, b = 14 mm, tip radii 41.318/59.272 mm, steel.
 inline GearPairSpec FzgCSpec() {

@@ -84,12 +84,7 @@ TEST(ToothProfile, FilletRunsFromTheRootCircleToTheInvoluteFormCircle) {
 }
 
 TEST(ToothProfile, RingFlanksSpanTipToRoot) {
-  GearPairSpec s = testing::Seed004Spec();
-  s.internal = true;
-  s.pinion.teeth = 20;
-  s.wheel.teeth = 60;
-  s.module_m = 3e-3;
-  s.wheel.tip_radius_m = 88e-3;
+  const GearPairSpec s = testing::InternalSpec();
   const GearPair pair(s);
   const auto curves = ToothProfile(pair);
   const auto& drive = Find(curves, "wheel", "drive");
