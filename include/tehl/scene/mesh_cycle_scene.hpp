@@ -39,6 +39,10 @@ struct MeshCycleStep {
   int pairs_in_contact = 0;             // tooth pairs sharing the load [-]
   double h_min_m = 0, h_c_m = 0;        // minimum and central (x = 0) film [m]
   double p_max_pa = 0;                  // [Pa]
+  double t_max_k = 0;                   // hottest film temperature (inlet T0 when isothermal) [K]
+  double t_mid_max_k = 0;               // hottest mid-film temperature (T0 when isothermal) [K]
+  double t1_max_k = 0, t2_max_k = 0;    // hottest surface temperature of pinion, wheel [K]
+  double friction_coefficient = 0;      // mu = integral tau dx / w (seed 004 eq. 16) [-]
   double c_rt = 0, c_ut = 0, c_wt = 0;  // R/R0, um/u0, w/w0 (seed 004 Fig. 3) [-]
   std::string zone;                     // "A-B", "B-D" or "D-E" (the segment the step ends in)
   LineContactSolver::Summary summary;
