@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ehl/cross_film.hpp"
 #include "tehl/lubricant/density_model.hpp"
 #include "tehl/lubricant/viscosity_model.hpp"
 
@@ -10,45 +11,100 @@ namespace tehl::internal {
 
 ReynoldsSystem::ReynoldsSystem(int n, double dx_m, int upwind_order)
     : n_(n), dx_(dx_m), order_(upwind_order) {
-  for (Eigen::VectorXd* v : {&r_, &rho_, &drho_, &eta_, &deta_, &q_, &e_, &de_dp_, &de_dh_})
+  for (Eigen::VectorXd* v :
+       {&r_, &e_, &de_dp_, &de_dh_, &fl_, &dfl_dp_, &flr_, &st_, &dst_dp_, &str_})
     v->setZero(n);
   a_.setZero(n, 4);
   b_.setZero(n, 4);
 }
 
-void ReynoldsSystem::Evaluate(const FluidLaws& fluid, double um, const Eigen::VectorXd& p,
-                              const Eigen::VectorXd& h, const TimeDerivative& dt,
-                              bool linearize) {
+void ReynoldsSystem::ClassicalNodes(const FluidLaws& fluid, double um, const Eigen::VectorXd& p,
+                                    const Eigen::VectorXd& h) {
   const double t = fluid.temperature_k;
-  // Node properties. Cavitated or negative iterates are evaluated at p = 0 (the laws'
-  // contract), with zero pressure derivative there.
+  // Cavitated or negative iterates are evaluated at p = 0 (the laws' contract), with zero
+  // pressure derivative there.
   const DensityValue d0 = fluid.density->Evaluate(0.0, t);
   const ViscosityValue v0 = fluid.viscosity->Evaluate(0.0, t);
   const double s = fluid.pressure_scale;
   for (int k = 0; k < n_; ++k) {
     const double pk = std::max(p[k], 0.0);
     const bool positive = p[k] > 0.0;
+    double rho = d0.rho_kg_m3, drho = 0.0, eta = v0.eta_pa_s, deta = 0.0;
     if (fluid.compressible && positive) {
       const DensityValue d = fluid.density->Evaluate(pk, t);
-      rho_[k] = d.rho_kg_m3;
-      drho_[k] = d.drho_dp;
-    } else {
-      rho_[k] = d0.rho_kg_m3;
-      drho_[k] = 0.0;
+      rho = d.rho_kg_m3;
+      drho = d.drho_dp;
     }
     if (fluid.piezoviscous && positive) {
       const ViscosityValue v = fluid.viscosity->Evaluate(s * pk, t);
-      eta_[k] = v.eta_pa_s;
-      deta_[k] = s * v.deta_dp;
-    } else {
-      eta_[k] = v0.eta_pa_s;
-      deta_[k] = 0.0;
+      eta = v.eta_pa_s;
+      deta = s * v.deta_dp;
     }
     const double hk = h[k], h3 = hk * hk * hk;
-    q_[k] = rho_[k] * hk;
-    e_[k] = rho_[k] * h3 / (12.0 * eta_[k]);
-    de_dp_[k] = h3 / 12.0 * (drho_[k] / eta_[k] - rho_[k] * deta_[k] / (eta_[k] * eta_[k]));
-    de_dh_[k] = 3.0 * rho_[k] * hk * hk / (12.0 * eta_[k]);
+    e_[k] = rho * h3 / (12.0 * eta);
+    de_dp_[k] = h3 / 12.0 * (drho / eta - rho * deta / (eta * eta));
+    de_dh_[k] = 3.0 * rho * hk * hk / (12.0 * eta);
+    flr_[k] = um * rho;
+    fl_[k] = flr_[k] * hk;
+    dfl_dp_[k] = um * drho * hk;
+    str_[k] = rho;
+    st_[k] = rho * hk;
+    dst_dp_[k] = drho * hk;
+  }
+}
+
+void ReynoldsSystem::GeneralizedNodes(const FluidLaws& fluid, const Eigen::VectorXd& p,
+                                      const Eigen::VectorXd& h) {
+  const Eigen::MatrixXd* tf = fluid.film_temperature_k;
+  const Eigen::MatrixXd* vf = fluid.viscosity_factor;
+  const int nz = static_cast<int>(tf ? tf->cols() : vf->cols());
+  work_.resize(7 * static_cast<size_t>(nz));
+  double* pz = work_.data();
+  double* tz = pz + nz;
+  double* eta = tz + nz;
+  double* deta = eta + nz;
+  double* rho = deta + nz;
+  double* drho = rho + nz;
+  std::vector<ViscosityValue> vv(nz);
+  std::vector<DensityValue> dv(nz);
+  const double s = fluid.pressure_scale;
+  for (int k = 0; k < n_; ++k) {
+    const bool positive = p[k] > 0.0;
+    const double pk = std::max(p[k], 0.0);
+    for (int j = 0; j < nz; ++j) tz[j] = tf ? (*tf)(k, j) : fluid.temperature_k;
+    std::fill(pz, pz + nz, fluid.piezoviscous && positive ? s * pk : 0.0);
+    fluid.viscosity->EvaluateMany(pz, tz, nz, vv.data());
+    std::fill(pz, pz + nz, fluid.compressible && positive ? pk : 0.0);
+    fluid.density->EvaluateMany(pz, tz, nz, dv.data());
+    for (int j = 0; j < nz; ++j) {
+      const double f = vf ? (*vf)(k, j) : 1.0;
+      eta[j] = f * vv[j].eta_pa_s;
+      deta[j] = fluid.piezoviscous && positive ? f * s * vv[j].deta_dp : 0.0;
+      rho[j] = dv[j].rho_kg_m3;
+      drho[j] = fluid.compressible && positive ? dv[j].drho_dp : 0.0;
+    }
+    const CrossFilmCoefficients c =
+        CrossFilmIntegrals(eta, deta, rho, drho, nz, fluid.u1_m_s, fluid.u2_m_s);
+    const double hk = h[k], h3 = hk * hk * hk;
+    e_[k] = c.phi * h3 / 12.0;
+    de_dp_[k] = c.dphi_dp * h3 / 12.0;
+    de_dh_[k] = c.phi * hk * hk / 4.0;
+    flr_[k] = c.flux;
+    fl_[k] = c.flux * hk;
+    dfl_dp_[k] = c.dflux_dp * hk;
+    str_[k] = c.rho_e;
+    st_[k] = c.rho_e * hk;
+    dst_dp_[k] = c.drho_e_dp * hk;
+  }
+}
+
+void ReynoldsSystem::Evaluate(const FluidLaws& fluid, double um, const Eigen::VectorXd& p,
+                              const Eigen::VectorXd& h, const TimeDerivative& dt,
+                              bool linearize) {
+  if (fluid.generalized()) {
+    GeneralizedNodes(fluid, p, h);
+  } else {
+    ClassicalNodes(fluid, um, p, h);
   }
 
   const double idx2 = 1.0 / (dx_ * dx_);
@@ -73,36 +129,35 @@ void ReynoldsSystem::Evaluate(const FluidLaws& fluid, double um, const Eigen::Ve
       c[1] = -1.0 / dx_;
       c[2] = 1.0 / dx_;
     }
-    const double couette = c[0] * (i >= 2 ? q_[i - 2] : 0.0) + c[1] * q_[i - 1] + c[2] * q_[i];
+    const double couette = c[0] * (i >= 2 ? fl_[i - 2] : 0.0) + c[1] * fl_[i - 1] + c[2] * fl_[i];
     double squeeze = 0.0;
-    if (dt.active) squeeze = dt.a0 * q_[i] + dt.a1 * dt.q1[i] + dt.a2 * dt.q2[i];
-    r_[i] = (e_p * dp_p - e_m * dp_m) * idx2 - um * couette - squeeze;
+    if (dt.active) squeeze = dt.a0 * st_[i] + dt.a1 * dt.q1[i] + dt.a2 * dt.q2[i];
+    r_[i] = (e_p * dp_p - e_m * dp_m) * idx2 - couette - squeeze;
     if (!linearize) continue;
     // Columns: 0 -> i-2, 1 -> i-1, 2 -> i, 3 -> i+1.
     a_(i, 3) = (e_p + 0.5 * de_dp_[i + 1] * dp_p) * idx2;
-    a_(i, 1) = (e_m - 0.5 * de_dp_[i - 1] * dp_m) * idx2 - um * c[1] * drho_[i - 1] * h[i - 1];
-    a_(i, 2) = (-e_p - e_m + 0.5 * de_dp_[i] * (dp_p - dp_m)) * idx2 -
-               um * c[2] * drho_[i] * h[i];
+    a_(i, 1) = (e_m - 0.5 * de_dp_[i - 1] * dp_m) * idx2 - c[1] * dfl_dp_[i - 1];
+    a_(i, 2) = (-e_p - e_m + 0.5 * de_dp_[i] * (dp_p - dp_m)) * idx2 - c[2] * dfl_dp_[i];
     b_(i, 3) = 0.5 * de_dh_[i + 1] * dp_p * idx2;
-    b_(i, 1) = -0.5 * de_dh_[i - 1] * dp_m * idx2 - um * c[1] * rho_[i - 1];
-    b_(i, 2) = 0.5 * de_dh_[i] * (dp_p - dp_m) * idx2 - um * c[2] * rho_[i];
+    b_(i, 1) = -0.5 * de_dh_[i - 1] * dp_m * idx2 - c[1] * flr_[i - 1];
+    b_(i, 2) = 0.5 * de_dh_[i] * (dp_p - dp_m) * idx2 - c[2] * flr_[i];
     if (i >= 2) {
-      a_(i, 0) = -um * c[0] * drho_[i - 2] * h[i - 2];
-      b_(i, 0) = -um * c[0] * rho_[i - 2];
+      a_(i, 0) = -c[0] * dfl_dp_[i - 2];
+      b_(i, 0) = -c[0] * flr_[i - 2];
     }
     if (dt.active) {
-      a_(i, 2) -= dt.a0 * drho_[i] * h[i];
-      b_(i, 2) -= dt.a0 * rho_[i];
+      a_(i, 2) -= dt.a0 * dst_dp_[i];
+      b_(i, 2) -= dt.a0 * str_[i];
     }
   }
 }
 
-Eigen::VectorXd ReynoldsSystem::MassFlow(double um, const Eigen::VectorXd& p) const {
+Eigen::VectorXd ReynoldsSystem::MassFlow(double /*um_m_s*/, const Eigen::VectorXd& p) const {
   Eigen::VectorXd flow(n_ - 1);
   for (int i = 0; i < n_ - 1; ++i) {
     const double e = 0.5 * (e_[i] + e_[i + 1]);
-    const double q = 0.5 * (q_[i] + q_[i + 1]);
-    flow[i] = q * um - e * (p[i + 1] - p[i]) / dx_;
+    const double q = 0.5 * (fl_[i] + fl_[i + 1]);
+    flow[i] = q - e * (p[i + 1] - p[i]) / dx_;
   }
   return flow;
 }

@@ -3,6 +3,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/grid.cpp
   src/ehl/film_thickness_formulas.cpp
   src/ehl/reynolds_system.cpp
+  src/ehl/cross_film.cpp
   src/ehl/newton_system.cpp
   src/ehl/gmres.cpp
   src/ehl/newton_krylov_solver.cpp
@@ -11,4 +12,8 @@ list(APPEND TEHL_SOURCES
   src/ehl/elastic_deflection.cpp
   src/ehl/surface_roughness.cpp
   src/ehl/dry_contact.cpp
+  src/ehl/surface_temperature.cpp
+  src/ehl/film_energy.cpp
+  src/ehl/film_energy_system.cpp
+  src/ehl/film_augmented_preconditioner.cpp
 )
