@@ -1,0 +1,88 @@
+// One mesh period of a spur gear pair as the torsional model sees it (docs/dynamics.md
+// "Mesh"): the time-varying mesh stiffness k(t) of all pairs in contact, where it jumps, and
+// the kinematics the tooth friction needs.
+//
+// The mesh phase is the position of the tracked pair along the line of action measured from
+// A, reduced modulo the base pitch: phi = (r_b1 w1 t) mod p_b in [0, p_b), so the tracked
+// pair is at A at t = 0. At phase phi the pairs in contact are at s = phi + j p_b in
+// [0, g_alpha] (j = 0, 1, ...). The period is cut into segments at the phases where a pair
+// enters (0) or leaves (g_alpha mod p_b: single/double contact switches) and where a pair
+// passes the pitch point (s_C mod p_b: the sliding and so the friction force change sign).
+// Within a segment the set of pairs and the friction signs are fixed and k is smooth.
+//
+// The pair stiffness k(s) of the gear core (any method: Kuang-Yang fit, potential energy,
+// symmetric or asymmetric flanks) is sampled once at Chebyshev-Lobatto points on [0,
+// g_alpha] and evaluated by barycentric interpolation (Berrut & Trefethen 2004, SIAM Rev.
+// 46:501-517), so the integrator's many evaluations cost no tooth-beam quadrature. Thread-safe
+// after construction.
+#pragma once
+
+#include <vector>
+
+#include "tehl/gear/gear_pair.hpp"
+#include "tehl/gear/load_sharing.hpp"
+
+namespace tehl {
+
+struct MeshSegment {
+  double begin_m = 0;        // phase at the start [m], in [0, p_b)
+  double end_m = 0;          // phase at the end [m], in (0, p_b]
+  std::vector<int> pairs;    // offsets j of the pairs in contact (s = phi + j p_b), ascending
+  std::vector<int> sliding;  // sign of u1 - u2 of each pair (+1 past the pitch point) [-]
+};
+
+class TorsionalMesh {
+ public:
+  // The drive-flank mesh of `pair` with pair stiffness `k` [N/m] (see load_sharing.hpp);
+  // chebyshev_points >= 3 samples of k on [0, g_alpha].
+  TorsionalMesh(const GearPair& pair, const PairStiffnessFn& k, int chebyshev_points = 33);
+  // The same geometry with a constant mesh stiffness k_mesh [N/m] shared equally between the
+  // pairs in contact (for limits and tests).
+  static TorsionalMesh Constant(const GearPair& pair, double mesh_stiffness_n_per_m);
+
+  double base_pitch_m() const { return base_pitch_m_; }              // p_b [m]
+  double length_m() const { return length_m_; }                      // g_alpha [m]
+  double pitch_point_m() const { return s_pitch_m_; }                // s_C [m]
+  double pinion_base_radius_m() const { return rb1_m_; }             // r_b1 [m]
+  double wheel_base_radius_m() const { return rb2_m_; }              // r_b2 [m]
+  double contact_ratio() const { return length_m_ / base_pitch_m_; }  // eps_alpha [-]
+  int pinion_teeth() const { return z1_; }
+  int wheel_teeth() const { return z2_; }
+  // Radii of curvature (roll distances) of the pinion and wheel flanks at s [m].
+  double Rho1(double s_m) const { return start_from_t1_m_ + s_m; }
+  double Rho2(double s_m) const;
+
+  const std::vector<MeshSegment>& segments() const { return segments_; }
+  // Segment holding phase phi in [0, p_b): begin <= phi < end.
+  int SegmentAt(double phase_m) const;
+
+  double PairStiffness(double s_m) const;                      // k(s), s in [0, g_alpha] [N/m]
+  double MeshStiffness(int segment, double phase_m) const;     // sum over the pairs [N/m]
+  // Share of pair `index` (position in segments()[segment].pairs) of the mesh force: its
+  // stiffness over the sum (equal deflection of parallel pairs) [-].
+  double PairShare(int segment, int index, double phase_m) const;
+  // Share of the pair at s in [0, g_alpha]; `left` takes the limit from below at a switch.
+  double ShareAt(double s_m, bool left) const;
+
+  // Over one period: mean of k_mesh = (1/p_b) integral of k(s) over [0, g_alpha], and the
+  // extremes (sampled) [N/m].
+  double mean_stiffness_n_per_m() const { return mean_n_per_m_; }
+  double min_stiffness_n_per_m() const { return min_n_per_m_; }
+  double max_stiffness_n_per_m() const { return max_n_per_m_; }
+
+ private:
+  TorsionalMesh() = default;
+  void BuildSegments(double s_pitch_m);
+  void Summarize();
+
+  double base_pitch_m_ = 0, length_m_ = 0, s_pitch_m_ = 0, rb1_m_ = 0, rb2_m_ = 0;
+  double start_from_t1_m_ = 0, tangent_length_m_ = 0;
+  bool internal_ = false;
+  int z1_ = 0, z2_ = 0;
+  double constant_mesh_n_per_m_ = 0;  // > 0: constant mode
+  std::vector<double> nodes_m_, values_n_per_m_, weights_;  // Chebyshev-Lobatto interpolant
+  std::vector<MeshSegment> segments_;
+  double mean_n_per_m_ = 0, min_n_per_m_ = 0, max_n_per_m_ = 0;
+};
+
+}  // namespace tehl

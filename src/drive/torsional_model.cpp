@@ -1,0 +1,188 @@
+#include "tehl/drive/torsional_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "tehl/units.hpp"
+
+namespace tehl {
+
+std::string ToString(ContactState s) {
+  switch (s) {
+    case ContactState::kDriveFlank: return "drive_flank";
+    case ContactState::kSeparated: return "separated";
+    case ContactState::kBackFlank: return "back_flank";
+  }
+  return "unknown";
+}
+
+std::string ToString(FrictionLaw f) {
+  switch (f) {
+    case FrictionLaw::kNone: return "none";
+    case FrictionLaw::kConstant: return "constant";
+    case FrictionLaw::kBuckingham: return "buckingham";
+  }
+  return "unknown";
+}
+
+std::optional<FrictionLaw> FrictionLawFromString(const std::string& name) {
+  if (name == "none") return FrictionLaw::kNone;
+  if (name == "constant") return FrictionLaw::kConstant;
+  if (name == "buckingham") return FrictionLaw::kBuckingham;
+  return std::nullopt;
+}
+
+double BuckinghamFriction(double v) {
+  // Seed 000 eq. 4.10, V converted from m/s to in/s.
+  const double v_in_s = std::abs(v) / 0.0254;
+  return 0.05 * std::exp(-0.125 * v_in_s) + 0.002 * std::sqrt(v_in_s);
+}
+
+double DiscInertia(double rho, double b, double r) { return 0.5 * kPi * rho * b * std::pow(r, 4); }
+
+std::vector<std::string> TorsionalParameters::Validate() const {
+  std::vector<std::string> bad;
+  auto rule = [&](bool ok, const char* field, double value, const char* constraint) {
+    if (ok) return;
+    std::ostringstream m;
+    m << "TorsionalParameters::" << field << " = " << value << " violates " << constraint;
+    bad.push_back(m.str());
+  };
+  rule(pinion_inertia_kg_m2 > 0, "pinion_inertia_kg_m2", pinion_inertia_kg_m2, "> 0 [kg m^2]");
+  rule(wheel_inertia_kg_m2 > 0, "wheel_inertia_kg_m2", wheel_inertia_kg_m2, "> 0 [kg m^2]");
+  rule(pinion_torque_nm > 0, "pinion_torque_nm", pinion_torque_nm, "> 0 [N m]");
+  rule(pinion_speed_rad_s > 0, "pinion_speed_rad_s", pinion_speed_rad_s, "> 0 [rad/s]");
+  rule(damping_ratio >= 0 && damping_ratio < 1, "damping_ratio", damping_ratio, "in [0, 1)");
+  rule(backlash_m >= 0, "backlash_m", backlash_m, ">= 0 [m]");
+  rule(friction_coefficient >= 0 && friction_coefficient < 1, "friction_coefficient",
+       friction_coefficient, "in [0, 1)");
+  return bad;
+}
+
+TorsionalModel::TorsionalModel(const TorsionalMesh& mesh, const TorsionalParameters& p)
+    : mesh_(mesh), p_(p) {
+  const double rb1 = mesh.pinion_base_radius_m(), rb2 = mesh.wheel_base_radius_m();
+  const double j1 = p.pinion_inertia_kg_m2, j2 = p.wheel_inertia_kg_m2;
+  m_e_ = j1 * j2 / (rb1 * rb1 * j2 + rb2 * rb2 * j1);
+  c_ = 2.0 * p.damping_ratio * std::sqrt(mesh.mean_stiffness_n_per_m() * m_e_);
+  f_static_ = p.pinion_torque_nm / rb1;
+  torque_load_nm_ = p.pinion_torque_nm * rb2 / rb1;
+}
+
+double TorsionalModel::natural_frequency_hz() const {
+  return std::sqrt(mesh_.mean_stiffness_n_per_m() / m_e_) / (2.0 * kPi);
+}
+double TorsionalModel::mesh_frequency_hz() const {
+  return mesh_.pinion_teeth() * p_.pinion_speed_rad_s / (2.0 * kPi);
+}
+double TorsionalModel::mesh_period_s() const { return mesh_.base_pitch_m() / contact_speed_m_s(); }
+
+double TorsionalModel::PhaseAt(long period, double t) const {
+  return contact_speed_m_s() * t - period * mesh_.base_pitch_m();
+}
+
+double TorsionalModel::MeshForce(ContactState s, int seg, double phase, double x,
+                                 double v) const {
+  switch (s) {
+    case ContactState::kDriveFlank: return mesh_.MeshStiffness(seg, phase) * x + c_ * v;
+    case ContactState::kSeparated: return 0.0;
+    case ContactState::kBackFlank:
+      return mesh_.MeshStiffness(seg, phase) * (x + p_.backlash_m) + c_ * v;
+  }
+  return 0.0;
+}
+
+double TorsionalModel::Acceleration(ContactState s, int seg, double phase, double x,
+                                    double v) const {
+  const double rb1 = mesh_.pinion_base_radius_m(), rb2 = mesh_.wheel_base_radius_m();
+  const double j1 = p_.pinion_inertia_kg_m2, j2 = p_.wheel_inertia_kg_m2;
+  const double f = MeshForce(s, seg, phase, x, v);
+  double tf1 = 0, tf2 = 0;
+  if (p_.friction != FrictionLaw::kNone && s == ContactState::kDriveFlank && f > 0) {
+    const MeshSegment& m = mesh_.segments()[seg];
+    const double w1 = p_.pinion_speed_rad_s;
+    const double w2 = w1 * mesh_.pinion_teeth() / mesh_.wheel_teeth();
+    for (size_t i = 0; i < m.pairs.size(); ++i) {
+      const double sj = phase + m.pairs[i] * mesh_.base_pitch_m();
+      const double rho1 = mesh_.Rho1(sj), rho2 = mesh_.Rho2(sj);
+      const double mu = p_.friction == FrictionLaw::kConstant
+                            ? p_.friction_coefficient
+                            : BuckinghamFriction(w1 * rho1 - w2 * rho2);
+      const double fj = f * mesh_.PairShare(seg, static_cast<int>(i), phase);
+      tf1 += mu * fj * m.sliding[i] * rho1;
+      tf2 += mu * fj * m.sliding[i] * rho2;
+    }
+  }
+  return rb1 * (p_.pinion_torque_nm - tf1) / j1 + rb2 * (torque_load_nm_ - tf2) / j2 - f / m_e_;
+}
+
+void TorsionalModel::Reset(double t, double x, double v) {
+  const double pb = mesh_.base_pitch_m();
+  period_ = static_cast<long>(std::floor(contact_speed_m_s() * t / pb));
+  double phase = PhaseAt(period_, t);
+  if (phase >= pb) {
+    ++period_;
+    phase -= pb;
+  }
+  segment_ = mesh_.SegmentAt(std::max(phase, 0.0));
+  state_ = x > 0 ? ContactState::kDriveFlank
+                 : (x >= -p_.backlash_m ? ContactState::kSeparated : ContactState::kBackFlank);
+  if (x == 0 && v > 0) state_ = ContactState::kDriveFlank;
+  events_.clear();
+}
+
+double TorsionalModel::ForceNow(double t, const double* y) const {
+  return MeshForce(state_, segment_, PhaseAt(period_, t), y[0], y[1]);
+}
+
+void TorsionalModel::Derivative(double t, const double* y, double* dydt) const {
+  const MeshSegment& seg = mesh_.segments()[segment_];
+  const double phase = std::clamp(PhaseAt(period_, t), seg.begin_m, seg.end_m);
+  dydt[0] = y[1];
+  dydt[1] = Acceleration(state_, segment_, phase, y[0], y[1]);
+}
+
+int TorsionalModel::GuardCount() const { return state_ == ContactState::kSeparated ? 2 : 1; }
+
+double TorsionalModel::Guard(int i, double, const double* y) const {
+  // Valid while >= 0. Drive flank: x >= 0. Separated: -x >= 0 and x + b >= 0. Back: -(x+b).
+  switch (state_) {
+    case ContactState::kDriveFlank: return y[0];
+    case ContactState::kSeparated: return i == 0 ? -y[0] : y[0] + p_.backlash_m;
+    case ContactState::kBackFlank: return -(y[0] + p_.backlash_m);
+  }
+  return 1.0;
+}
+
+double TorsionalModel::NextScheduledTime(double) const {
+  const double end = period_ * mesh_.base_pitch_m() + mesh_.segments()[segment_].end_m;
+  return end / contact_speed_m_s();
+}
+
+void TorsionalModel::Switch(int guard, double t, double* y) {
+  if (guard < 0) {
+    if (++segment_ == static_cast<int>(mesh_.segments().size())) {
+      segment_ = 0;
+      ++period_;
+    }
+    return;
+  }
+  const ContactState from = state_;
+  if (state_ == ContactState::kDriveFlank) {
+    state_ = p_.backlash_m > 0 ? ContactState::kSeparated : ContactState::kBackFlank;
+    y[0] = 0.0;  // on the guard surface (located to the event tolerance)
+  } else if (state_ == ContactState::kBackFlank) {
+    state_ = p_.backlash_m > 0 ? ContactState::kSeparated : ContactState::kDriveFlank;
+    y[0] = -p_.backlash_m;
+  } else if (guard == 0) {
+    state_ = ContactState::kDriveFlank;
+    y[0] = 0.0;
+  } else {
+    state_ = ContactState::kBackFlank;
+    y[0] = -p_.backlash_m;
+  }
+  events_.push_back({t, from, state_});
+}
+
+}  // namespace tehl
