@@ -19,6 +19,8 @@ Command AddLubricantCommand(CLI::App& app);  // tehl lubricant NAME --p ... --T 
 Command AddGearCommand(CLI::App& app);       // tehl gear CASE [--csv F] [--profile F]
 Command AddRunCommand(CLI::App& app);        // tehl run CASE
 Command AddPlotCommand(CLI::App& app);       // tehl plot RESULT.h5 [-o DIR]
+Command AddTrainCommand(CLI::App& app);      // tehl train FILE [--csv F]
+Command AddSweepCommand(CLI::App& app);      // tehl sweep STUDY [-j N] [--resume] [--dry-run]
 
 // Exit codes.
 inline constexpr int kExitOk = 0;

@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
       AddGearCommand(app),
       AddRunCommand(app),
       AddPlotCommand(app),
+      AddSweepCommand(app),
+      AddTrainCommand(app),
   };
   try {
     app.parse(argc, argv);

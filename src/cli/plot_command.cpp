@@ -34,11 +34,13 @@ Command AddPlotCommand(CLI::App& app) {
                      "an .h5 file written by `tehl run`"});
               p.ThrowIfAny();
             }
-            const std::string script = internal::FindScript("plot_cycle.py");
+            // A study's index (tehl sweep, docs/studies.md) goes to the study script.
+            const char* name = fs::path(args->result).filename() == "index.h5" ? "plot_study.py"
+                                                                                : "plot_cycle.py";
+            const std::string script = internal::FindScript(name);
             if (script.empty()) {
-              std::fprintf(stderr,
-                           "tehl plot: scripts/plot_cycle.py not found (set "
-                           "TEHL_SCRIPT_DIR)\n");
+              std::fprintf(stderr, "tehl plot: scripts/%s not found (set TEHL_SCRIPT_DIR)\n",
+                           name);
               return kExitInternal;
             }
             std::string out = args->output_dir;

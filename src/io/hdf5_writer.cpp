@@ -5,10 +5,24 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <mutex>
+
+#include "io/hdf5_lock.hpp"
 
 namespace tehl {
+
+namespace internal {
+std::recursive_mutex& Hdf5LibraryMutex() {
+  static std::recursive_mutex mutex;
+  return mutex;
+}
+}  // namespace internal
+
 namespace {
 namespace fs = std::filesystem;
+
+// Held by every public method below (io/hdf5_lock.hpp).
+using Hdf5Lock = std::lock_guard<std::recursive_mutex>;
 
 [[noreturn]] void Fail(const std::string& what) {
   throw std::runtime_error("HDF5 result file: " + what);
@@ -112,6 +126,7 @@ class Hdf5Writer::Impl {
 };
 
 Hdf5Writer::Hdf5Writer(const std::string& final_path) : impl_(std::make_unique<Impl>()) {
+  Hdf5Lock lock(internal::Hdf5LibraryMutex());
   impl_->final_path = final_path;
   const fs::path parent = fs::path(final_path).parent_path();
   if (!parent.empty()) fs::create_directories(parent);
@@ -121,6 +136,7 @@ Hdf5Writer::Hdf5Writer(const std::string& final_path) : impl_(std::make_unique<I
 }
 
 Hdf5Writer::~Hdf5Writer() {
+  Hdf5Lock lock(internal::Hdf5LibraryMutex());
   if (impl_ && !impl_->committed) {
     if (impl_->file >= 0) H5Fclose(impl_->file);
     std::error_code ec;
@@ -133,6 +149,7 @@ void Hdf5Writer::WriteVector(const std::string& dataset,
                              const std::string& unit,
                              const std::string& meaning) {
   CheckFinite(dataset, values);
+  Hdf5Lock lock(internal::Hdf5LibraryMutex());
   const hsize_t dims[1] = {values.size()};
   impl_->WriteNumeric(dataset, values.data(), H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, 1, dims, unit,
                       meaning);
@@ -148,6 +165,7 @@ void Hdf5Writer::WriteMatrix(const std::string& dataset,
     Fail(dataset + ": " + std::to_string(row_major.size()) + " values for " + std::to_string(rows) +
          " x " + std::to_string(cols));
   CheckFinite(dataset, row_major);
+  Hdf5Lock lock(internal::Hdf5LibraryMutex());
   const hsize_t dims[2] = {static_cast<hsize_t>(rows), static_cast<hsize_t>(cols)};
   impl_->WriteNumeric(dataset, row_major.data(), H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, 2, dims, unit,
                       meaning);
@@ -156,6 +174,7 @@ void Hdf5Writer::WriteMatrix(const std::string& dataset,
 void Hdf5Writer::WriteInts(const std::string& dataset,
                            const std::vector<int>& values,
                            const std::string& meaning) {
+  Hdf5Lock lock(internal::Hdf5LibraryMutex());
   const hsize_t dims[1] = {values.size()};
   impl_->WriteNumeric(dataset, values.data(), H5T_NATIVE_INT, H5T_STD_I32LE, 1, dims, "-", meaning);
 }
@@ -163,6 +182,7 @@ void Hdf5Writer::WriteInts(const std::string& dataset,
 void Hdf5Writer::WriteStrings(const std::string& dataset,
                               const std::vector<std::string>& values,
                               const std::string& meaning) {
+  Hdf5Lock lock(internal::Hdf5LibraryMutex());
   impl_->Require();
   impl_->MakeParents(dataset);
   std::vector<const char*> ptrs;
@@ -184,6 +204,7 @@ void Hdf5Writer::WriteStrings(const std::string& dataset,
 void Hdf5Writer::WriteText(const std::string& dataset,
                            const std::string& text,
                            const std::string& meaning) {
+  Hdf5Lock lock(internal::Hdf5LibraryMutex());
   impl_->Require();
   impl_->MakeParents(dataset);
   Handle type(VariableString(), H5Tclose);
@@ -201,6 +222,7 @@ void Hdf5Writer::WriteText(const std::string& dataset,
 void Hdf5Writer::SetAttribute(const std::string& object,
                               const std::string& name,
                               const std::string& value) {
+  Hdf5Lock lock(internal::Hdf5LibraryMutex());
   impl_->Require();
   Handle obj(H5Oopen(impl_->file, object.c_str(), H5P_DEFAULT), H5Oclose);
   if (!obj.ok()) Fail("no object " + object + " for attribute " + name);
@@ -212,6 +234,7 @@ void Hdf5Writer::SetAttribute(const std::string& object,
                               double value,
                               const std::string& unit) {
   CheckFinite(object + "@" + name, {value});
+  Hdf5Lock lock(internal::Hdf5LibraryMutex());
   impl_->Require();
   Handle obj(H5Oopen(impl_->file, object.c_str(), H5P_DEFAULT), H5Oclose);
   if (!obj.ok()) Fail("no object " + object + " for attribute " + name);
@@ -226,6 +249,7 @@ void Hdf5Writer::SetAttribute(const std::string& object,
 }
 
 void Hdf5Writer::Commit() {
+  Hdf5Lock lock(internal::Hdf5LibraryMutex());
   impl_->Require();
   const bool flushed = H5Fflush(impl_->file, H5F_SCOPE_GLOBAL) >= 0;
   const bool closed = H5Fclose(impl_->file) >= 0;

@@ -7,4 +7,9 @@ list(APPEND TEHL_SOURCES
   src/scene/gear_case.cpp
   src/scene/mesh_cycle_output.cpp
   src/scene/mesh_cycle_scene.cpp
+  src/scene/study_case_text.cpp
+  src/scene/study_reader.cpp
+  src/scene/study.cpp
+  src/scene/study_index.cpp
+  src/scene/study_run.cpp
 )

@@ -20,13 +20,13 @@ namespace {
 namespace fs = std::filesystem;
 
 struct MalformedFile {
-  std::string kind;  // "case" or "lubricant"
+  std::string kind;  // "case", "lubricant" or "study"
   std::string path;  // absolute
 };
 
 std::vector<MalformedFile> Corpus() {
   std::vector<MalformedFile> files;
-  for (const char* kind : {"case", "lubricant"}) {
+  for (const char* kind : {"case", "lubricant", "study"}) {
     const fs::path dir = fs::path(TEHL_SOURCE_DIR) / "tests" / "malformed" / kind;
     if (!fs::is_directory(dir)) continue;
     for (const auto& e : fs::directory_iterator(dir))
@@ -63,7 +63,10 @@ TEST_P(MalformedInput, ExitsWithCodeTwoAndNamesFileLineAndKey) {
   ASSERT_TRUE(ParseHeader(f.path, &e))
       << f.path << ": the first line must be \"# ERROR <key> at line <n|->: <what>\"";
   const std::string args =
-      f.kind == "case" ? "case --check '" + f.path + "'" : "lubricant '" + f.path + "'";
+      f.kind == "case"    ? "case --check '" + f.path + "'"
+      : f.kind == "study" ? "sweep --dry-run -q -o '" + testing::UniqueTempPath("study") +
+                                "' '" + f.path + "'"
+                          : "lubricant '" + f.path + "'";
   const testing::RunResult r = testing::RunTehl(args);
   ASSERT_TRUE(r.exited) << f.path << ": killed by signal " << r.signal << "\n" << r.err;
   EXPECT_EQ(r.exit_code, 2) << f.path << "\n" << r.err;
@@ -90,6 +93,7 @@ TEST(MalformedCorpus, HasAtLeastTwentyFiveFilesOfBothKinds) {
   };
   EXPECT_GE(count("case"), 10);
   EXPECT_GE(count("lubricant"), 10);
+  EXPECT_GE(count("study"), 8);
 }
 
 // Controls: well-formed inputs pass, so the rejections above come from the defects.

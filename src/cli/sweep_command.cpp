@@ -1,0 +1,106 @@
+// tehl sweep STUDY [-j N] [--resume] [--dry-run] [-q] [-o DIR]: expands a study file into
+// scenes and runs them on a pool of threads, over MPI ranks when started by mpirun (static
+// round-robin: scene i on rank i mod K); rank 0 writes the index once every rank is done.
+#include <cstdio>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/sweep_mpi.hpp"
+#include "tehl/error.hpp"
+#include "tehl/scene/study.hpp"
+#include "tehl/scene/study_index.hpp"
+#include "tehl/scene/study_run.hpp"
+
+namespace tehl::cli {
+namespace {
+
+struct SweepArgs {
+  std::string study;
+  std::string output_dir;
+  int threads = 0;
+  bool resume = false;
+  bool dry_run = false;
+  bool quiet = false;
+};
+
+int RunSweep(const SweepArgs& a) {
+  const SweepMpi mpi;
+  Study study;
+  try {
+    StudyReadOptions ro;
+    ro.output_dir = a.output_dir;
+    study = ReadStudy(a.study, ro);
+  } catch (const InputError&) {
+    if (mpi.rank() == 0) throw;  // every rank finds the same problems: one report
+    return kExitBadInput;
+  }
+  if (mpi.rank() == 0) WriteSceneFiles(study);
+  if (a.dry_run) {
+    if (mpi.rank() == 0) {
+      std::printf("%s: %zu scenes (%s of %zu parameters), base %s\n", a.study.c_str(),
+                  study.scenes.size(), study.mode.c_str(), study.parameters.size(),
+                  study.base_case_path.c_str());
+      for (const auto& sc : study.scenes) {
+        std::printf("%s", sc.case_path.c_str());
+        for (size_t i = 0; i < study.parameters.size(); ++i)
+          std::printf("  %s = %s", study.parameters[i].label.c_str(),
+                      study.parameters[i].values_toml[sc.value_index[i]].c_str());
+        std::printf("\n");
+      }
+    }
+    return kExitOk;
+  }
+  mpi.Barrier();  // the scene files are written
+
+  std::vector<int> mine;
+  for (int i = mpi.rank(); i < static_cast<int>(study.scenes.size()); i += mpi.size())
+    mine.push_back(i);
+  SweepOptions so;
+  so.threads = a.threads;
+  so.resume = a.resume;
+  if (!a.quiet)
+    so.on_scene = [&](const SceneRow& r, int done, int total) {
+      std::fprintf(stderr, "%s[%d/%d] %s %s%s (%.1f s)\n",
+                   mpi.size() > 1 ? ("rank " + std::to_string(mpi.rank()) + " ").c_str() : "",
+                   done, total, study.scenes[r.scene].name.c_str(), r.status.c_str(),
+                   r.computed ? "" : ", resumed", r.wall_time_s);
+    };
+  const std::vector<SceneRow> rows = RunStudyScenes(study, mine, so);
+
+  const std::string all = mpi.GatherToRoot(SceneRowsToText(rows));
+  if (mpi.rank() != 0) return kExitOk;
+  const std::vector<SceneRow> gathered = SceneRowsFromText(all);
+  const auto paths = WriteStudyIndex(study, gathered);
+  int ok = 0, not_converged = 0, failed = 0, resumed = 0;
+  for (const auto& r : gathered) {
+    ok += r.status == "ok";
+    not_converged += r.status == "not_converged";
+    failed += r.status.rfind("failed", 0) == 0;
+    resumed += !r.computed;
+  }
+  std::printf("%zu scenes: %d ok, %d not converged, %d failed (%d read back by --resume)\n",
+              gathered.size(), ok, not_converged, failed, resumed);
+  std::printf("wrote %s and %s\n", paths[0].c_str(), paths[1].c_str());
+  return ok == static_cast<int>(gathered.size()) ? kExitOk : kExitNotConverged;
+}
+
+}  // namespace
+
+Command AddSweepCommand(CLI::App& app) {
+  auto args = std::make_shared<SweepArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "sweep", "Run a study: a base case expanded into scenes (docs/studies.md)");
+  sub->add_option("STUDY", args->study, "Study file (.toml)")->required();
+  sub->add_option("-j,--threads", args->threads, "Scenes run at once per process (default: all "
+                  "cores)")
+      ->check(CLI::Range(1, 4096));
+  sub->add_flag("--resume", args->resume,
+                "Read back the scenes whose result file is complete; run only the others");
+  sub->add_flag("--dry-run", args->dry_run,
+                "Expand, check and write the scene files; run nothing");
+  sub->add_flag("-q,--quiet", args->quiet, "No line per finished scene");
+  sub->add_option("-o,--output-dir", args->output_dir, "Folder of the study ([study] output)");
+  return {sub, [args]() { return RunSweep(*args); }};
+}
+
+}  // namespace tehl::cli

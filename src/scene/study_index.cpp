@@ -1,0 +1,371 @@
+#include "tehl/scene/study_index.hpp"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+
+#include "io/hdf5_lock.hpp"
+#include "tehl/io/hdf5_writer.hpp"
+
+namespace tehl {
+namespace {
+namespace fs = std::filesystem;
+
+// Read-only access to a result file; every call holds the HDF5 lock (io/hdf5_lock.hpp).
+class Hdf5Reader {
+ public:
+  explicit Hdf5Reader(const std::string& path)
+      : lock_(internal::Hdf5LibraryMutex()), path_(path) {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file_ < 0) throw std::runtime_error("cannot open the result file " + path);
+  }
+  ~Hdf5Reader() { H5Fclose(file_); }
+  Hdf5Reader(const Hdf5Reader&) = delete;
+  Hdf5Reader& operator=(const Hdf5Reader&) = delete;
+
+  bool Exists(const std::string& name) const {
+    size_t pos = 0;
+    while ((pos = name.find('/', pos + 1)) != std::string::npos)
+      if (H5Lexists(file_, name.substr(0, pos).c_str(), H5P_DEFAULT) <= 0) return false;
+    return H5Lexists(file_, name.c_str(), H5P_DEFAULT) > 0;
+  }
+
+  std::vector<double> Doubles(const std::string& name) const {
+    const hid_t set = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
+    if (set < 0) throw std::runtime_error(path_ + ": no dataset " + name);
+    const hid_t space = H5Dget_space(set);
+    const hssize_t n = H5Sget_simple_extent_npoints(space);
+    std::vector<double> v(n > 0 ? n : 0);
+    const herr_t st =
+        v.empty() ? 0 : H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+    H5Sclose(space);
+    H5Dclose(set);
+    if (st < 0) throw std::runtime_error(path_ + ": cannot read " + name);
+    return v;
+  }
+
+  std::vector<std::string> Strings(const std::string& name) const {
+    std::vector<std::string> out;
+    const hid_t set = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
+    if (set < 0) return out;
+    const hid_t space = H5Dget_space(set);
+    const hid_t type = H5Dget_type(set);
+    const hssize_t n = H5Sget_simple_extent_npoints(space);
+    std::vector<char*> p(n > 0 ? n : 0, nullptr);
+    if (!p.empty() && H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0) {
+      for (char* s : p) out.emplace_back(s ? s : "");
+      H5Dvlen_reclaim(type, space, H5P_DEFAULT, p.data());
+    }
+    H5Tclose(type);
+    H5Sclose(space);
+    H5Dclose(set);
+    return out;
+  }
+
+  std::string StringAttribute(const std::string& object, const std::string& name) const {
+    if (H5Aexists_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT) <= 0) return "";
+    const hid_t attr =
+        H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t type = H5Aget_type(attr);
+    char* value = nullptr;
+    std::string out;
+    if (H5Tis_variable_str(type) > 0 && H5Aread(attr, type, &value) >= 0 && value) {
+      out = value;
+      H5free_memory(value);
+    }
+    H5Tclose(type);
+    H5Aclose(attr);
+    return out;
+  }
+
+  double DoubleAttribute(const std::string& object, const std::string& name) const {
+    if (H5Aexists_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT) <= 0)
+      throw std::runtime_error(path_ + ": no attribute " + object + "@" + name);
+    const hid_t attr =
+        H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    double x = 0;
+    const herr_t st = H5Aread(attr, H5T_NATIVE_DOUBLE, &x);
+    H5Aclose(attr);
+    if (st < 0) throw std::runtime_error(path_ + ": cannot read " + object + "@" + name);
+    return x;
+  }
+
+ private:
+  std::lock_guard<std::recursive_mutex> lock_;
+  std::string path_;
+  hid_t file_ = -1;
+};
+
+double Min(const std::vector<double>& v) {
+  return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end());
+}
+double Max(const std::vector<double>& v) {
+  return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+}
+double Mean(const std::vector<double>& v) {
+  double s = 0;
+  for (double x : v) s += x;
+  return v.empty() ? 0.0 : s / static_cast<double>(v.size());
+}
+
+SceneRow GearRow(const std::string& path) {
+  const Hdf5Reader h5(path);
+  SceneRow r;
+  const auto s = h5.Doubles("/cycle/s");
+  const auto h_min = h5.Doubles("/cycle/h_min");
+  const auto h_c = h5.Doubles("/cycle/h_c");
+  r.steps = static_cast<int>(s.size());
+  r.h_min_min_m = Min(h_min);
+  r.h_c_min_m = Min(h_c);
+  r.p_max_max_pa = Max(h5.Doubles("/cycle/p_max"));
+  // The pitch point: the step nearest s_C (MeshCycleResult::PitchStep()).
+  const double s_c = h5.DoubleAttribute("/cycle", "s_C");
+  size_t pitch = 0;
+  for (size_t i = 1; i < s.size(); ++i)
+    if (std::abs(s[i] - s_c) < std::abs(s[pitch] - s_c)) pitch = i;
+  r.h_c_pitch_m = h_c.empty() ? 0.0 : h_c[pitch];
+  if (h5.Exists("/cycle/T_max")) r.t_max_max_k = Max(h5.Doubles("/cycle/T_max"));
+  if (h5.Exists("/cycle/mu")) {
+    const auto mu = h5.Doubles("/cycle/mu");
+    r.mu_mean = Mean(mu);
+    r.mu_max = Max(mu);
+  }
+  r.wall_time_s = h5.DoubleAttribute("/", "wall_time");
+  const bool ok = h5.StringAttribute("/", "converged") == "true";
+  r.status = ok ? "ok" : "not_converged";
+  if (!ok) {
+    const auto messages = h5.Strings("/solver/message");
+    if (!messages.empty()) r.message = messages.back();
+  }
+  return r;
+}
+
+std::vector<std::string> SplitCsv(const std::string& line) {
+  std::vector<std::string> out(1);
+  for (char c : line) {
+    if (c == ',') out.emplace_back();
+    else if (c != '\r') out.back() += c;
+  }
+  return out;
+}
+
+SceneRow ContactRow(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  if (!std::getline(in, line)) throw std::runtime_error("cannot read " + path);
+  const auto head = SplitCsv(line);
+  auto col = [&](const std::string& name) {
+    const auto it = std::find(head.begin(), head.end(), name);
+    if (it == head.end()) throw std::runtime_error(path + ": no column " + name);
+    return static_cast<size_t>(it - head.begin());
+  };
+  const size_t ih = col("h_min_m"), ic = col("h_c_m"), ip = col("p_max_pa"),
+               it = col("termination");
+  std::vector<double> h_min, h_c, p_max;
+  SceneRow r;
+  r.status = "ok";
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const auto f = SplitCsv(line);
+    if (f.size() != head.size()) throw std::runtime_error(path + ": ragged row");
+    h_min.push_back(std::stod(f[ih]));
+    h_c.push_back(std::stod(f[ic]));
+    p_max.push_back(std::stod(f[ip]));
+    if (f[it] != "converged") {
+      r.status = "not_converged";
+      r.message = f[it];
+    }
+  }
+  r.steps = static_cast<int>(h_min.size());
+  r.h_min_min_m = Min(h_min);
+  r.h_c_min_m = Min(h_c);
+  r.h_c_pitch_m = h_c.empty() ? 0.0 : h_c.back();
+  r.p_max_max_pa = Max(p_max);
+  return r;
+}
+
+std::string OneLine(std::string s) {
+  for (char& c : s)
+    if (c == '\t' || c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
+std::string CsvText(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string Num(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+// The HDF5 dataset name of a parameter label ('/' separates groups).
+std::string DatasetName(std::string label) {
+  std::replace(label.begin(), label.end(), '/', '_');
+  return label;
+}
+
+}  // namespace
+
+SceneRow ReadSceneRow(const Study& study, const StudyScene& scene) {
+  const std::string path = study.ResultPath(scene);
+  SceneRow r = study.gear ? GearRow(path) : ContactRow(path);
+  r.scene = scene.id;
+  r.result_path = path;
+  return r;
+}
+
+SceneRow FailedSceneRow(const StudyScene& scene, const std::string& what) {
+  SceneRow r;
+  r.scene = scene.id;
+  r.status = "failed: " + OneLine(what);
+  r.message = OneLine(what);
+  return r;
+}
+
+std::string SceneRowsToText(const std::vector<SceneRow>& rows) {
+  std::ostringstream o;
+  for (const auto& r : rows) {
+    o << r.scene << '\t' << OneLine(r.status) << '\t' << OneLine(r.message) << '\t'
+      << OneLine(r.result_path) << '\t' << (r.computed ? 1 : 0) << '\t' << r.steps;
+    for (double x : {r.h_min_min_m, r.h_c_pitch_m, r.h_c_min_m, r.p_max_max_pa, r.t_max_max_k,
+                     r.mu_mean, r.mu_max, r.wall_time_s})
+      o << '\t' << Num(x);
+    o << '\n';
+  }
+  return o.str();
+}
+
+std::vector<SceneRow> SceneRowsFromText(const std::string& text) {
+  std::vector<SceneRow> rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty()) continue;
+    std::vector<std::string> f(1);
+    for (char c : line) {
+      if (c == '\t') f.emplace_back();
+      else f.back() += c;
+    }
+    if (f.size() != 14) throw std::runtime_error("malformed scene row: " + line);
+    SceneRow r;
+    r.scene = std::stoi(f[0]);
+    r.status = f[1];
+    r.message = f[2];
+    r.result_path = f[3];
+    r.computed = f[4] == "1";
+    r.steps = std::stoi(f[5]);
+    double* d[] = {&r.h_min_min_m, &r.h_c_pitch_m, &r.h_c_min_m, &r.p_max_max_pa,
+                   &r.t_max_max_k, &r.mu_mean,     &r.mu_max,    &r.wall_time_s};
+    for (int i = 0; i < 8; ++i) *d[i] = std::stod(f[6 + i]);
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
+std::vector<std::string> WriteStudyIndex(const Study& study, std::vector<SceneRow> rows) {
+  std::sort(rows.begin(), rows.end(),
+            [](const SceneRow& a, const SceneRow& b) { return a.scene < b.scene; });
+  fs::create_directories(study.output_dir);
+  const std::string h5_path = (fs::path(study.output_dir) / "index.h5").string();
+  const std::string csv_path = (fs::path(study.output_dir) / "index.csv").string();
+  auto column = [&](double SceneRow::*field) {
+    std::vector<double> v;
+    for (const auto& r : rows) v.push_back(r.*field);
+    return v;
+  };
+  std::vector<int> ids, computed, steps;
+  std::vector<std::string> status, message, result;
+  for (const auto& r : rows) {
+    ids.push_back(r.scene);
+    computed.push_back(r.computed ? 1 : 0);
+    steps.push_back(r.steps);
+    status.push_back(r.status);
+    message.push_back(r.message);
+    result.push_back(r.result_path);
+  }
+  {
+    Hdf5Writer h5(h5_path);
+    h5.SetAttribute("/", "program", "tehl 0.1.0");
+    h5.SetAttribute("/", "study_file", study.path);
+    h5.SetAttribute("/", "base_case", study.base_case_path);
+    h5.SetAttribute("/", "mode", study.mode);
+    h5.SetAttribute("/", "name", study.name);
+    h5.SetAttribute("/", "kind", study.gear ? "mesh_cycle" : "contact");
+    h5.WriteInts("/scene", ids, "scene id (scenes/scene_NNNN)");
+    h5.WriteStrings("/status", status, "ok, not_converged, or failed: <message>");
+    h5.WriteStrings("/message", message, "solver message of the last step when not ok");
+    h5.WriteStrings("/result", result, "the scene's result file");
+    h5.WriteInts("/computed", computed, "1: run by this sweep, 0: read back (--resume)");
+    h5.WriteInts("/steps", steps, "rows of the scene's cycle table");
+    std::vector<std::string> labels;
+    for (const auto& p : study.parameters) {
+      const std::string name = "/parameters/" + DatasetName(p.label);
+      labels.push_back(p.label);
+      if (p.numeric) {
+        std::vector<double> v;
+        for (const auto& r : rows)
+          v.push_back(p.values_number[study.scenes[r.scene].value_index[&p - &study.parameters[0]]]);
+        h5.WriteVector(name, v, p.unit.empty() ? "-" : p.unit, "varied case key " + p.key);
+      } else {
+        std::vector<std::string> v;
+        for (const auto& r : rows)
+          v.push_back(p.values_toml[study.scenes[r.scene].value_index[&p - &study.parameters[0]]]);
+        h5.WriteStrings(name, v, "varied case key " + p.key + " (TOML literals)");
+      }
+      h5.SetAttribute(name, "key", p.key);
+    }
+    h5.WriteStrings("/parameter_labels", labels, "the [[vary]] labels, in study order");
+    h5.WriteVector("/summary/h_min_min", column(&SceneRow::h_min_min_m), "m",
+                   "minimum over the cycle of the minimum film thickness");
+    h5.WriteVector("/summary/h_c_pitch", column(&SceneRow::h_c_pitch_m), "m",
+                   "central film thickness at the pitch point");
+    h5.WriteVector("/summary/h_c_min", column(&SceneRow::h_c_min_m), "m",
+                   "minimum over the cycle of the central film thickness");
+    h5.WriteVector("/summary/p_max_max", column(&SceneRow::p_max_max_pa), "Pa",
+                   "maximum over the cycle of the film pressure");
+    h5.WriteVector("/summary/T_max_max", column(&SceneRow::t_max_max_k), "K",
+                   "maximum over the cycle of the film temperature (0: not in the result)");
+    h5.WriteVector("/summary/mu_mean", column(&SceneRow::mu_mean), "-",
+                   "mean friction coefficient over the steps (0: not in the result)");
+    h5.WriteVector("/summary/mu_max", column(&SceneRow::mu_max), "-",
+                   "maximum friction coefficient over the steps (0: not in the result)");
+    h5.WriteVector("/summary/wall_time", column(&SceneRow::wall_time_s), "s",
+                   "run time of the scene");
+    h5.Commit();
+  }
+  std::ostringstream csv;
+  csv << "scene";
+  for (const auto& p : study.parameters) csv << ',' << CsvText(p.label);
+  csv << ",h_min_min_m,h_c_pitch_m,h_c_min_m,p_max_max_pa,t_max_max_k,mu_mean,mu_max,"
+         "wall_time_s,steps,status,computed,result\n";
+  for (const auto& r : rows) {
+    csv << r.scene;
+    for (size_t i = 0; i < study.parameters.size(); ++i)
+      csv << ',' << CsvText(study.parameters[i].values_toml[study.scenes[r.scene].value_index[i]]);
+    for (double x : {r.h_min_min_m, r.h_c_pitch_m, r.h_c_min_m, r.p_max_max_pa, r.t_max_max_k,
+                     r.mu_mean, r.mu_max, r.wall_time_s})
+      csv << ',' << Num(x);
+    csv << ',' << r.steps << ',' << CsvText(r.status) << ',' << (r.computed ? 1 : 0) << ','
+        << CsvText(r.result_path) << '\n';
+  }
+  const std::string part = csv_path + ".part";
+  {
+    std::ofstream out(part, std::ios::binary | std::ios::trunc);
+    out << csv.str();
+    if (!out) throw std::runtime_error("cannot write " + part);
+  }
+  fs::rename(part, csv_path);
+  return {h5_path, csv_path};
+}
+
+}  // namespace tehl
