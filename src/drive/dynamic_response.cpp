@@ -39,6 +39,19 @@ DynamicSample DynamicResponse::SampleAt(double phase, bool left) const {
   size_t i = it == steps.begin() ? 0 : static_cast<size_t>(it - steps.begin()) - 1;
   if (left && i > 0 && t <= steps[i].dense.t0_s) --i;
   if (!left && t >= steps[i].dense.t_end_s && i + 1 < steps.size()) ++i;
+  // At a segment end the times of the two sides may differ by rounding: choose by segment.
+  const TorsionalMesh& mesh = model->mesh();
+  int want = mesh.SegmentAt(std::min(phase, pb * (1 - 1e-15)));
+  if (left) {
+    for (int k = 0; k < static_cast<int>(mesh.segments().size()); ++k)
+      if (phase > mesh.segments()[k].begin_m && phase <= mesh.segments()[k].end_m) want = k;
+  }
+  if (steps[i].segment != want) {
+    if (i > 0 && steps[i - 1].segment == want)
+      --i;
+    else if (i + 1 < steps.size() && steps[i + 1].segment == want)
+      ++i;
+  }
   const Step& st = steps[i];
   const double tc = std::clamp(t, st.dense.t0_s, st.dense.t_end_s);
   double y[2];
