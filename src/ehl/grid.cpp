@@ -48,6 +48,8 @@ std::string FilmEffects::ToString() const {
   add(compressible, "compressible");
   add(transient, "transient");
   add(roughness, "roughness");
+  add(thermal, "thermal");
+  add(non_newtonian, "non_newtonian");
   return s.empty() ? "rigid isoviscous incompressible steady" : s;
 }
 

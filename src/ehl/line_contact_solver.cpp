@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <optional>
@@ -9,6 +10,7 @@
 #include <sstream>
 
 #include "base/schema.hpp"
+#include "ehl/film_field.hpp"
 #include "ehl/newton_system.hpp"
 #include "ehl/reynolds_system.hpp"
 #include "tehl/ehl/elastic_deflection.hpp"
@@ -58,6 +60,7 @@ std::string ToString(LineContactSolver::Termination t) {
     case T::kLineSearchFailed: return "line_search_failed";
     case T::kLinearSolverFailed: return "linear_solver_failed";
     case T::kInvalidInput: return "invalid_input";
+    case T::kCouplingNotConverged: return "coupling_not_converged";
   }
   return "?";
 }
@@ -98,6 +101,11 @@ std::vector<std::string> LineContactSolver::Options::Validate() const {
   rule(max_continuation_stages >= 0, "max_continuation_stages", max_continuation_stages, ">= 0");
   rule(min_step_fraction > 0 && min_step_fraction <= 1, "min_step_fraction", min_step_fraction,
        "in (0, 1]");
+  rule(film_nodes >= 3, "film_nodes", film_nodes, ">= 3");
+  rule(thermal_tolerance_k > 0, "thermal_tolerance_k", thermal_tolerance_k, "> 0");
+  rule(max_coupling_iterations >= 1, "max_coupling_iterations", max_coupling_iterations, ">= 1");
+  rule(thermal_relaxation > 0 && thermal_relaxation <= 1, "thermal_relaxation",
+       thermal_relaxation, "in (0, 1]");
   return bad;
 }
 
@@ -107,6 +115,9 @@ std::string LineContactSolver::Summary::BriefReport() const {
   if (continuation_stages) o << " (" << continuation_stages << " continuation stages)";
   if (krylov_iterations) o << ", " << krylov_iterations << " GMRES iterations";
   if (substeps > 1) o << ", " << substeps << " substeps";
+  if (coupling_iterations)
+    o << ", " << coupling_iterations << " thermal coupling iterations (last dT "
+      << temperature_change_k << " K, energy balance " << energy_balance_error << ")";
   o << ", residual " << residual << ", load error " << load_error << ", " << linear_solver << ", "
     << wall_time_s << " s";
   if (!usable()) o << ": " << message;
@@ -118,9 +129,9 @@ class LineContactSolver::Impl {
  public:
   Impl(const UniformGrid& grid, double e_prime, const Lubricant& lub, const FilmEffects& eff,
        const Options& opt, std::shared_ptr<const SurfaceShape> s1,
-       std::shared_ptr<const SurfaceShape> s2)
+       std::shared_ptr<const SurfaceShape> s2, const ContactSolids& solids)
       : grid_(grid), e_prime_(e_prime), lub_(lub), eff_(eff), opt_(opt), s1_(std::move(s1)),
-        s2_(std::move(s2)), sys_(grid.size(), grid.dx_m(), opt.upwind_order) {
+        s2_(std::move(s2)), solids_(solids), sys_(grid.size(), grid.dx_m(), opt.upwind_order) {
     ProblemList bad;
     for (const auto& m : opt.Validate()) bad.Add({"", 0, "LineContactSolver::Options", "", m, ""});
     if (!(e_prime > 0))
@@ -131,6 +142,8 @@ class LineContactSolver::Impl {
     for (int i = 0; i < n; ++i) x2_[i] = 0.5 * grid.x(i) * grid.x(i);
     if (eff.elastic) elastic_.emplace(n, grid.dx_m(), e_prime);
     if (eff.roughness) heights_.setZero(n);
+    if (eff.thermal || eff.non_newtonian)
+      field_ = std::make_unique<internal::FilmField>(grid, lub, eff, solids, opt);
     const bool small = n <= opt.dense_max_nodes;
     if (opt.linear_solver == LinearSolverKind::kDense) {
       linear_ = internal::MakeDenseLuSolver();
@@ -160,6 +173,12 @@ class LineContactSolver::Impl {
     f.compressible = eff_.compressible;
     f.temperature_k = c.temperature_k;
     f.pressure_scale = pressure_scale;
+    if (field_) {
+      f.film_temperature_k = field_->temperature();
+      f.viscosity_factor = field_->viscosity_factor();
+      f.u1_m_s = c.u1_m_s;
+      f.u2_m_s = c.u2_m_s;
+    }
     return f;
   }
 
@@ -488,8 +507,12 @@ class LineContactSolver::Impl {
     if (!coarse_) {
       Options o = opt_;
       o.linear_solver = LinearSolverKind::kAuto;
+      // The coarse guess is isothermal and Newtonian: the fine grid couples the fields.
+      FilmEffects coarse_effects = eff_;
+      coarse_effects.thermal = false;
+      coarse_effects.non_newtonian = false;
       coarse_ = std::make_unique<Impl>(UniformGrid(grid_.x_start_m(), grid_.x_end_m(), nc),
-                                       e_prime_, lub_, eff_, o, s1_, s2_);
+                                       e_prime_, lub_, coarse_effects, o, s1_, s2_, solids_);
     }
     FilmState cs;
     cs.time_s = 0;
@@ -525,6 +548,7 @@ class LineContactSolver::Impl {
   }
 
   void BeginTransient(const ContactConditions& c, const FilmState& s) {
+    if (field_) field_->Begin(c, s);
     hist_ = History{};
     hist_.levels = 1;
     hist_.q1 = RhoH(c, s);
@@ -558,7 +582,7 @@ class LineContactSolver::Impl {
     next.travel1_m = s->travel1_m + 0.5 * dt * (hist_.c_prev.u1_m_s + c.u1_m_s);
     next.travel2_m = s->travel2_m + 0.5 * dt * (hist_.c_prev.u2_m_s + c.u2_m_s);
     const TimeDerivative td = Derivative(dt);
-    Summary sum = Solve(c, td, &next);
+    Summary sum = SolveCoupled(c, td, s, eff_.transient ? dt : 0.0, &next);
     if (sum.usable()) {
       *s = next;
       hist_.q2 = hist_.q1;
@@ -613,6 +637,7 @@ class LineContactSolver::Impl {
   }
 
   double ResidualNorm(const ContactConditions& c, const FilmState& st) {
+    if (field_) field_->Begin(c, st);
     FilmState s = st;
     Eigen::VectorXd f;
     if (!Residual(c, Fluid(c), ScalesFor(c), TimeDerivative{}, &s, &f, true))
@@ -621,10 +646,87 @@ class LineContactSolver::Impl {
   }
 
   Eigen::VectorXd MassFlow(const ContactConditions& c, const FilmState& st) {
+    if (field_) field_->Begin(c, st);
     FilmState s = st;
     Film(c, &s);
     sys_.Evaluate(Fluid(c), c.um(), s.p_pa, s.h_m, TimeDerivative{}, false);
     return sys_.MassFlow(c.um(), s.p_pa);
+  }
+
+  FilmFriction Friction(const ContactConditions& c, const FilmState& st) {
+    FilmState s = st;
+    Film(c, &s);
+    if (field_) {
+      field_->Begin(c, st);
+      return field_->Friction(c, s);
+    }
+    // Newtonian, isothermal: eta(p, T0) uniform across the film (two cross-film nodes).
+    return internal::IntegrateFriction(grid_, s, c, 2, [&](int i, double* eta) {
+      const double p = eff_.piezoviscous ? std::max(s.p_pa[i], 0.0) : 0.0;
+      eta[0] = eta[1] = lub_.viscosity().Evaluate(p, c.temperature_k).eta_pa_s;
+    });
+  }
+
+  // Thermal / non-Newtonian: pressure solves and field updates alternate until the fields
+  // settle (DESIGN.md section 5); otherwise a plain pressure solve. `previous` and dt_s give
+  // the energy equation its old level (dt_s <= 0: steady).
+  Summary SolveCoupled(const ContactConditions& c, const TimeDerivative& td,
+                       const FilmState* previous, double dt_s, FilmState* s) {
+    if (!field_) return Solve(c, td, s);
+    const auto t0 = Clock::now();
+    field_->Begin(c, *s);
+    Summary sum;
+    int total = 0, krylov = 0, stages = 0, coupling = 0;
+    double change_t = -1, change_f = 0, balance = -1;
+    bool settled = false;
+    std::string energy_failure;
+    for (int k = 0; k < opt_.max_coupling_iterations && !settled; ++k) {
+      sum = Solve(c, td, s);
+      total += sum.total_iterations;
+      krylov += sum.krylov_iterations;
+      stages += sum.continuation_stages;
+      if (!sum.usable()) break;
+      ++coupling;
+      change_f = field_->UpdateRheology(c, *s);
+      change_t = 0.0;
+      if (eff_.thermal) {
+        const auto e = field_->UpdateTemperature(c, *s, previous, dt_s, opt_.thermal_relaxation);
+        balance = e.summary.balance.RelativeError();
+        change_t = e.max_change_k;
+        if (!e.ok) {
+          energy_failure = e.summary.message;
+          break;
+        }
+      }
+      if (std::getenv("TEHL_DEBUG_COUPLING"))
+        std::fprintf(stderr, "coupling %d: newton %d dT %g df %g balance %g\n", k,
+                     sum.total_iterations, change_t, change_f, balance);
+      settled = change_t < opt_.thermal_tolerance_k && change_f < 1e-4;
+      if (settled) {  // the pressure of the settled fields
+        sum = Solve(c, td, s);
+        total += sum.total_iterations;
+        krylov += sum.krylov_iterations;
+      }
+    }
+    field_->Store(s);
+    if (sum.usable() && !settled) {
+      sum.termination = Termination::kCouplingNotConverged;
+      sum.message = !energy_failure.empty()
+                        ? "energy equation: " + energy_failure
+                        : "the pressure/temperature coupling did not settle in " +
+                              std::to_string(opt_.max_coupling_iterations) +
+                              " iterations (last temperature change " +
+                              internal::FormatReal(change_t) + " K, viscosity factor change " +
+                              internal::FormatReal(change_f) + ")";
+    }
+    sum.total_iterations = total;
+    sum.krylov_iterations = krylov;
+    sum.continuation_stages = stages;
+    sum.coupling_iterations = coupling;
+    sum.temperature_change_k = change_t;
+    sum.energy_balance_error = balance;
+    sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    return sum;
   }
 
  private:
@@ -634,6 +736,7 @@ class LineContactSolver::Impl {
   FilmEffects eff_;
   Options opt_;
   std::shared_ptr<const SurfaceShape> s1_, s2_;
+  ContactSolids solids_;
   ReynoldsSystem sys_;
   std::optional<ElasticDeflection> elastic_;
   std::unique_ptr<internal::NewtonLinearSolver> linear_;
@@ -642,15 +745,17 @@ class LineContactSolver::Impl {
   std::vector<char> cavitated_;
   History hist_;
   std::unique_ptr<Impl> coarse_;  // grid sequencing, built on first use
+  std::unique_ptr<internal::FilmField> field_;  // thermal / non-Newtonian runs only
 };
 
 LineContactSolver::LineContactSolver(const UniformGrid& grid, double e_prime_pa,
                                      const Lubricant& lubricant, const FilmEffects& effects,
                                      const Options& options,
                                      std::shared_ptr<const SurfaceShape> surface1,
-                                     std::shared_ptr<const SurfaceShape> surface2)
+                                     std::shared_ptr<const SurfaceShape> surface2,
+                                     const ContactSolids& solids)
     : impl_(std::make_unique<Impl>(grid, e_prime_pa, lubricant, effects, options,
-                                   std::move(surface1), std::move(surface2))) {}
+                                   std::move(surface1), std::move(surface2), solids)) {}
 LineContactSolver::~LineContactSolver() = default;
 LineContactSolver::LineContactSolver(LineContactSolver&&) noexcept = default;
 LineContactSolver& LineContactSolver::operator=(LineContactSolver&&) noexcept = default;
@@ -661,7 +766,7 @@ FilmState LineContactSolver::InitialGuess(const ContactConditions& c) const {
 }
 LineContactSolver::Summary LineContactSolver::SolveSteady(const ContactConditions& c,
                                                           FilmState* state) {
-  return impl_->Solve(c, internal::TimeDerivative{}, state);
+  return impl_->SolveCoupled(c, internal::TimeDerivative{}, nullptr, 0.0, state);
 }
 void LineContactSolver::BeginTransient(const ContactConditions& c, const FilmState& initial) {
   impl_->BeginTransient(c, initial);
@@ -676,6 +781,9 @@ double LineContactSolver::ResidualNorm(const ContactConditions& c, const FilmSta
 Eigen::VectorXd LineContactSolver::MassFlow(const ContactConditions& c,
                                             const FilmState& s) const {
   return impl_->MassFlow(c, s);
+}
+FilmFriction LineContactSolver::Friction(const ContactConditions& c, const FilmState& s) const {
+  return impl_->Friction(c, s);
 }
 
 }  // namespace tehl

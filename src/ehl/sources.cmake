@@ -4,6 +4,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/film_thickness_formulas.cpp
   src/ehl/reynolds_system.cpp
   src/ehl/cross_film.cpp
+  src/ehl/film_field.cpp
   src/ehl/newton_system.cpp
   src/ehl/gmres.cpp
   src/ehl/newton_krylov_solver.cpp

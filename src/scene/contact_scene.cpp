@@ -123,7 +123,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   const UniformGrid grid = UniformGrid::AroundHertz(hz.half_width_m, film.grid_points,
                                                     film.x_start_b, film.x_end_b);
   LineContactSolver solver(grid, in.e_prime, *film.lubricant, film.effects, film.options,
-                           film.surface1, film.surface2);
+                           film.surface1, film.surface2, film.solids);
   auto conditions = [&](double t) {
     return ContactConditions{r, Interpolate(in.t, in.u1, t), Interpolate(in.t, in.u2, t),
                              Interpolate(in.t, in.w, t), film.inlet_temperature_k};

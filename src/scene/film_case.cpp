@@ -51,10 +51,29 @@ FilmCase ReadFilmCase(Document& doc) {
   f.effects.compressible = doc.Bool("effects", "compressible");
   f.effects.transient = doc.Bool("effects", "transient");
   f.effects.roughness = doc.Bool("effects", "roughness");
-  for (const char* effect : {"thermal", "dynamic_load", "non_newtonian"})
-    if (doc.Bool("effects", effect))
-      doc.Problem("effects", effect, "this effect is not available in this version of tehl",
-                  std::string(effect) + " = false");
+  f.effects.thermal = doc.Bool("effects", "thermal");
+  f.effects.non_newtonian = doc.Bool("effects", "non_newtonian");
+  if (doc.Bool("effects", "dynamic_load") && !doc.HasSection("gear"))
+    doc.Problem("effects", "dynamic_load", "the dynamic tooth load needs a [gear] pair",
+                "dynamic_load = false for a [contact] case");
+  if (f.effects.non_newtonian && f.lubricant && !f.lubricant->eyring())
+    doc.Problem("effects", "non_newtonian",
+                "the lubricant '" + name + "' has no [eyring] section (Eyring stress)",
+                "non_newtonian = false, or a lubricant with [eyring] eyring_stress_pa");
+
+  // Thermal properties of the two bodies: [gear.pinion]/[gear.wheel] or [contact].
+  auto solid = [&](const std::string& section, const std::string& suffix) {
+    return SolidThermal{doc.Real(section, "density" + suffix + "_kg_m3"),
+                        doc.Real(section, "heat_capacity" + suffix + "_j_kgk"),
+                        doc.Real(section, "conductivity" + suffix + "_w_mk")};
+  };
+  if (doc.HasSection("contact")) {
+    f.solids.body1 = solid("contact", "_1");
+    f.solids.body2 = solid("contact", "_2");
+  } else if (doc.HasSection("gear")) {
+    f.solids.body1 = solid("gear.pinion", "");
+    f.solids.body2 = solid("gear.wheel", "");
+  }
 
   f.grid_points = static_cast<int>(doc.Int("numerics", "grid_points"));
   f.x_start_b = doc.Real("numerics", "x_start_b");
@@ -65,6 +84,7 @@ FilmCase ReadFilmCase(Document& doc) {
   o.linear_solver = LinearSolverKindFromString(doc.String("numerics", "linear_solver"));
   o.tolerance = doc.Real("numerics", "newton_tolerance");
   o.max_iterations = static_cast<int>(doc.Int("numerics", "max_newton_iterations"));
+  o.film_nodes = static_cast<int>(doc.Int("numerics", "film_nodes"));
   if (o.tolerance >= 1.0)
     doc.Problem("numerics", "newton_tolerance", "must be < 1", "a small positive number, e.g. 1e-8");
 

@@ -22,6 +22,7 @@ struct FilmCase {
   int grid_points = 513;                          // [-]
   double x_start_b = -4.5, x_end_b = 1.5;         // grid ends in Hertz half-widths [-]
   std::shared_ptr<const SurfaceShape> surface1, surface2;  // null = smooth
+  ContactSolids solids;                           // thermal properties of the two bodies
 };
 
 // Reads [lubricant], [effects], [numerics] and [surfaces]; problems go into `doc`.

@@ -13,6 +13,7 @@ struct CycleColumn {
   const char* unit;
   const char* meaning;
   std::function<double(const MeshCycleStep&)> get;
+  bool thermal = false;  // written only by thermal runs
 };
 
 const std::vector<CycleColumn>& CycleColumns() {
@@ -35,6 +36,16 @@ const std::vector<CycleColumn>& CycleColumns() {
       {"h_c", "m", "central film thickness (x = 0)",
        [](const MeshCycleStep& k) { return k.h_c_m; }},
       {"p_max", "Pa", "maximum film pressure", [](const MeshCycleStep& k) { return k.p_max_pa; }},
+      {"mu", "-", "friction coefficient, mean traction of both surfaces / w (seed 004 eq. 16)",
+       [](const MeshCycleStep& k) { return k.friction_coefficient; }},
+      {"T_max", "K", "hottest film temperature",
+       [](const MeshCycleStep& k) { return k.t_max_k; }, true},
+      {"T_mid", "K", "hottest mid-film temperature",
+       [](const MeshCycleStep& k) { return k.t_mid_max_k; }, true},
+      {"T1_max", "K", "hottest pinion surface temperature",
+       [](const MeshCycleStep& k) { return k.t1_max_k; }, true},
+      {"T2_max", "K", "hottest wheel surface temperature",
+       [](const MeshCycleStep& k) { return k.t2_max_k; }, true},
       {"C_RT", "-", "R / R0, R0 at the pitch point (seed 004 Fig. 3)",
        [](const MeshCycleStep& k) { return k.c_rt; }},
       {"C_UT", "-", "um / u0, u0 at the pitch point (seed 004 Fig. 3)",
@@ -75,7 +86,8 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
   h5.SetAttribute("/", "wall_time", r.wall_time_s, "s");
 
   for (const auto& c : CycleColumns())
-    h5.WriteVector(std::string("/cycle/") + c.name, Column(r, c), c.unit, c.meaning);
+    if (!c.thermal || r.thermal)
+      h5.WriteVector(std::string("/cycle/") + c.name, Column(r, c), c.unit, c.meaning);
   std::vector<int> pairs;
   std::vector<std::string> zones;
   for (const auto& k : r.steps) {
@@ -101,6 +113,21 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
     h5.WriteMatrix("/profiles/p", Flatten(r.p_pa), rows, cols, "Pa",
                    "film pressure over (step, x)");
     h5.WriteMatrix("/profiles/h", Flatten(r.h_m), rows, cols, "m", "film thickness over (step, x)");
+    if (r.thermal && r.t_mid_k.size() == r.p_pa.size()) {
+      h5.WriteMatrix("/profiles/T_mid", Flatten(r.t_mid_k), rows, cols, "K",
+                     "mid-film temperature over (step, x)");
+      h5.WriteMatrix("/profiles/T1", Flatten(r.t1_k), rows, cols, "K",
+                     "pinion surface temperature over (step, x)");
+      h5.WriteMatrix("/profiles/T2", Flatten(r.t2_k), rows, cols, "K",
+                     "wheel surface temperature over (step, x)");
+    }
+  }
+  if (r.thermal && !r.t_field_k.empty() && r.t_field_k.size() == r.p_pa.size()) {
+    h5.WriteMatrix("/profiles/T", Flatten(r.t_field_k), static_cast<int>(r.t_field_k.size()),
+                   static_cast<int>(r.x_m.size()) * r.film_nodes, "K",
+                   "film temperature over (step, x, z): row k holds T(x_i, z_j) at index "
+                   "i * film_nodes + j, z_j = j h / (film_nodes - 1) from the pinion surface");
+    h5.SetAttribute("/profiles/T", "film_nodes", static_cast<double>(r.film_nodes), "-");
   }
 
   std::vector<std::string> termination, message;
@@ -122,6 +149,21 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
   h5.WriteVector("/solver/residual", residual, "-", "final scaled residual max-norm");
   h5.WriteVector("/solver/load_error", load_error, "-", "|integral p dx - w| / w");
   h5.WriteVector("/solver/wall_time", wall, "s", "wall time of each step's solve");
+  if (r.thermal) {
+    std::vector<int> coupling;
+    std::vector<double> change, balance;
+    for (const auto& k : r.steps) {
+      coupling.push_back(k.summary.coupling_iterations);
+      change.push_back(k.summary.temperature_change_k);
+      balance.push_back(k.summary.energy_balance_error);
+    }
+    h5.WriteInts("/solver/coupling_iterations", coupling,
+                 "pressure/temperature coupling iterations per step");
+    h5.WriteVector("/solver/temperature_change", change, "K",
+                   "last temperature change of the coupling (-1: not reached)");
+    h5.WriteVector("/solver/energy_balance_error", balance, "-",
+                   "relative energy balance error of the film (-1: not reached)");
+  }
   h5.Commit();
 }
 
@@ -129,12 +171,14 @@ void WriteMeshCycleCsv(const std::string& path, const MeshCycleResult& r) {
   const auto& cols = CycleColumns();
   std::vector<CsvColumn> table;
   for (const auto& c : cols) {
+    if (c.thermal && !r.thermal) continue;
     // Header = name and unit as in the case keys: s_m, u1_m_s, w_n_per_m, p_max_pa, SRR.
     const std::string unit = c.unit;
     const std::string suffix = unit == "-"     ? ""
                                : unit == "m/s" ? "_m_s"
                                : unit == "N/m" ? "_n_per_m"
                                : unit == "Pa"  ? "_pa"
+                               : unit == "K"   ? "_k"
                                                : "_" + unit;
     table.push_back({std::string(c.name) + suffix, Column(r, c)});
   }

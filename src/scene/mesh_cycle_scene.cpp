@@ -222,8 +222,11 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   }
 
   LineContactSolver solver(grid, e_prime, *film.lubricant, film.effects, film.options,
-                           film.surface1, film.surface2);
+                           film.surface1, film.surface2, film.solids);
   r.x_m = grid.Nodes();
+  r.thermal = film.effects.thermal;
+  r.film_nodes = film.options.film_nodes;
+  const bool keep_field = r.thermal && doc.Bool("output", "temperature_field");
   FilmState state;
   const auto t_solve = Clock::now();
   const bool tty = isatty(STDERR_FILENO);
@@ -246,6 +249,27 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
     k.h_min_m = state.MinFilm();
     k.h_c_m = state.CentralFilm(grid);
     k.p_max_pa = state.MaxPressure();
+    k.friction_coefficient = solver.Friction(conditions(st), state).coefficient;
+    k.t_max_k = k.t_mid_max_k = k.t1_max_k = k.t2_max_k = film.inlet_temperature_k;
+    if (r.thermal && state.temperature.Matches(grid.size(), r.film_nodes)) {
+      const FilmTemperature& t = state.temperature;
+      const int nz = r.film_nodes;
+      const Eigen::VectorXd mid = 0.5 * (t.t_k.col((nz - 1) / 2) + t.t_k.col(nz / 2));
+      k.t_max_k = t.MaxTemperature();
+      k.t_mid_max_k = mid.maxCoeff();
+      k.t1_max_k = t.t1_k.maxCoeff();
+      k.t2_max_k = t.t2_k.maxCoeff();
+      r.t_mid_k.emplace_back(mid.data(), mid.data() + mid.size());
+      r.t1_k.emplace_back(t.t1_k.data(), t.t1_k.data() + t.t1_k.size());
+      r.t2_k.emplace_back(t.t2_k.data(), t.t2_k.data() + t.t2_k.size());
+      if (keep_field) {
+        // Row-major (x, z) per step.
+        std::vector<double> field(static_cast<size_t>(grid.size()) * nz);
+        for (int i = 0; i < grid.size(); ++i)
+          for (int j = 0; j < nz; ++j) field[static_cast<size_t>(i) * nz + j] = t.t_k(i, j);
+        r.t_field_k.push_back(std::move(field));
+      }
+    }
     k.c_rt = k.reduced_radius_m / r.r0_m;
     k.c_ut = k.um_m_s / r.u0_m_s;
     k.c_wt = k.load_n_per_m / r.w0_n_per_m;

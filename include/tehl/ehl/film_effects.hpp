@@ -12,6 +12,9 @@ struct FilmEffects {
   bool compressible = true;  // rho(p); false = rho(0, T)
   bool transient = true;     // squeeze term d(rho h)/dt in time steps; false = quasi-steady
   bool roughness = false;    // surface shapes move with their surfaces (needs surface shapes)
+  bool thermal = false;      // energy equation across the film, surface temperatures, eta(T),
+                             // rho(T) and the generalized Reynolds equation
+  bool non_newtonian = false;  // Ree-Eyring shear thinning (needs the lubricant's Eyring data)
   std::string ToString() const;  // e.g. "elastic piezoviscous compressible transient"
 };
 

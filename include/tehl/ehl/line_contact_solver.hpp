@@ -19,7 +19,9 @@
 #include <Eigen/Core>
 
 #include "tehl/ehl/film_effects.hpp"
+#include "tehl/ehl/film_energy.hpp"
 #include "tehl/ehl/grid.hpp"
+#include "tehl/ehl/surface_temperature.hpp"
 
 namespace tehl {
 
@@ -48,6 +50,21 @@ struct ContactConditions {
   double um() const { return 0.5 * (u1_m_s + u2_m_s); }  // entrainment speed [m/s]
 };
 
+// Thermal properties of the two bodies (used only when effects.thermal is on).
+struct ContactSolids {
+  SolidThermal body1{7850.0, 470.0, 46.0};  // steel by default
+  SolidThermal body2{7850.0, 470.0, 46.0};
+};
+
+// Friction of the film (seed 004 eq. 16): the shear force of the film on each surface per unit
+// face width, from the wall shear stress of the cross-film velocity profile.
+struct FilmFriction {
+  double traction1_n_per_m = 0;  // integral tau(z = 0) dx: force on surface 1 along +x [N/m]
+  double traction2_n_per_m = 0;  // -integral tau(z = h) dx: force on surface 2 along +x [N/m]
+  double coefficient = 0;        // mu = (|traction1| + |traction2|) / (2 w) [-]
+  double max_shear_stress_pa = 0;  // largest |tau| at either wall [Pa]
+};
+
 // The film at one time level (the solver's output and its next initial guess).
 struct FilmState {
   Eigen::VectorXd p_pa;      // pressure at every node, zero at both ends [Pa]
@@ -56,6 +73,9 @@ struct FilmState {
   double time_s = 0;         // time of this level [s]
   double travel1_m = 0;      // integral of u1 dt since t = 0: how far surface 1 moved [m]
   double travel2_m = 0;      // integral of u2 dt [m]
+  // Thermal runs only (empty, nothing allocated, when effects.thermal is off): the film
+  // temperature T(x_i, xi_j), the surface temperatures and the heat fluxes into the solids.
+  FilmTemperature temperature;
   bool valid() const { return p_pa.size() > 0 && p_pa.size() == h_m.size(); }
   double MinFilm() const;      // h_min, parabola through the smallest node [m]
   double CentralFilm(const UniformGrid& g) const;  // h at x = 0 (interpolated) [m]
@@ -80,11 +100,17 @@ class LineContactSolver {
     int max_continuation_stages = 12; // load / pressure-viscosity continuation stages [-]
     int coarse_grid_nodes = 129;      // grid sequencing halves the grid down to this [-]
     double min_step_fraction = 1.0 / 1024;  // smallest line-search step [-]
+    // Thermal runs: the pressure solve and the energy solve alternate (the temperature
+    // under-relaxed) until the temperature changes by less than thermal_tolerance_k.
+    int film_nodes = 11;              // nodes across the film, both surfaces included [-]
+    double thermal_tolerance_k = 0.01;     // [K]
+    int max_coupling_iterations = 40;      // [-]
+    double thermal_relaxation = 0.8;       // T <- T + relaxation (T_energy - T) [-]
     std::vector<std::string> Validate() const;  // every violated rule; empty = valid
   };
 
   enum class Termination { kConverged, kMaxIterations, kLineSearchFailed, kLinearSolverFailed,
-                           kInvalidInput };
+                           kInvalidInput, kCouplingNotConverged };
   struct IterationRecord {
     double residual = 0;       // scaled max-norm after the iteration [-]
     double step = 0;           // line-search step taken (1 = full Newton) [-]
@@ -104,6 +130,11 @@ class LineContactSolver {
     std::string linear_solver;      // "dense", "newton_krylov" or "reused_lu"
     int substeps = 1;               // time substeps a transient Step needed [-]
     std::vector<IterationRecord> history;
+    // Thermal runs: pressure/energy coupling iterations, the last temperature change and the
+    // energy balance error of the film (EnergyBalance::RelativeError) [-].
+    int coupling_iterations = 0;    // [-]
+    double temperature_change_k = -1;  // [K]
+    double energy_balance_error = -1;  // [-]
     bool usable() const { return termination == Termination::kConverged; }
     std::string BriefReport() const;
   };
@@ -113,7 +144,8 @@ class LineContactSolver {
   LineContactSolver(const UniformGrid& grid, double e_prime_pa, const Lubricant& lubricant,
                     const FilmEffects& effects, const Options& options,
                     std::shared_ptr<const SurfaceShape> surface1 = nullptr,
-                    std::shared_ptr<const SurfaceShape> surface2 = nullptr);
+                    std::shared_ptr<const SurfaceShape> surface2 = nullptr,
+                    const ContactSolids& solids = ContactSolids{});
   ~LineContactSolver();
   LineContactSolver(LineContactSolver&&) noexcept;
   LineContactSolver& operator=(LineContactSolver&&) noexcept;
@@ -144,6 +176,10 @@ class LineContactSolver {
   // i+1 (size n-1) [kg/(m s)]; constant along x for a converged steady film.
   double ResidualNorm(const ContactConditions& c, const FilmState& state) const;
   Eigen::VectorXd MassFlow(const ContactConditions& c, const FilmState& state) const;
+
+  // Friction of a solved state (its temperature field when thermal, else the inlet
+  // temperature; Ree-Eyring when effects.non_newtonian).
+  FilmFriction Friction(const ContactConditions& c, const FilmState& state) const;
 
  private:
   class Impl;

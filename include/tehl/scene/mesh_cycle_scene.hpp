@@ -52,6 +52,12 @@ struct MeshCycleResult {
   std::vector<MeshCycleStep> steps;             // steps[0]: the steady film at A; then one per step
   std::vector<double> x_m;                      // grid nodes [m]
   std::vector<std::vector<double>> p_pa, h_m;   // profiles per step over x [Pa], [m]
+  bool thermal = false;                         // effects.thermal of the case
+  int film_nodes = 0;                           // nodes across the film (thermal) [-]
+  // Thermal runs only (empty otherwise), per step over x: mid-film temperature and the
+  // surface temperatures of pinion and wheel [K]; the full field T(x, z) row-major (x, z)
+  // per step when [output] temperature_field is true [K].
+  std::vector<std::vector<double>> t_mid_k, t1_k, t2_k, t_field_k;
   double length_m = 0;                          // g_alpha, A to E [m]
   double s_b_m = 0, s_c_m = 0, s_d_m = 0;       // B, pitch point C, D from A [m]
   double r0_m = 0, u0_m_s = 0, w0_n_per_m = 0;  // R, um and w at C [m], [m/s], [N/m]

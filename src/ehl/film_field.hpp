@@ -1,0 +1,112 @@
+// The fields across the film that make a line contact thermal and/or non-Newtonian: the film
+// temperature T(x_i, xi_j) (energy equation, ehl/film_energy.hpp) and the Ree-Eyring factor
+// f = eta_eff / eta(p, T) (docs/theory.md, "Thermal coupling" and "Ree-Eyring film").
+//
+// The pressure solve reads both as frozen fields (generalized Reynolds, ehl/cross_film.hpp);
+// between pressure solves the coupling updates them from the pressure solution:
+//   Eyring: at each node the wall shear stress tau_1 solves h int_0^1 gdot(tau_1 + h p' xi) dxi
+//           = u2 - u1 with gdot(tau) = (tau0/eta) sinh(tau/tau0) / (1 - (tau/tauL)^2) (the last
+//           factor only with a limiting shear stress tauL = tauL0 + Lambda p: the stress tends
+//           to tauL as the shear rate grows), then f = tau / (eta gdot(tau)) at every xi_j;
+//   thermal: the energy equation with the velocity profile and the dissipation tau^2/eta_eff.
+// Private to src/ehl.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "tehl/ehl/film_effects.hpp"
+#include "tehl/ehl/film_energy.hpp"
+#include "tehl/ehl/grid.hpp"
+#include "tehl/ehl/line_contact_solver.hpp"
+
+namespace tehl {
+class Lubricant;
+}
+
+namespace tehl::internal {
+
+// Anderson acceleration of a fixed-point iteration x -> g(x), damped by `relaxation`
+// (Walker & Ni 2011, type II, depth m).
+class AndersonMixer {
+ public:
+  explicit AndersonMixer(int depth) : depth_(depth) {}
+  // The next iterate from the current one and its image.
+  Eigen::MatrixXd Mix(const Eigen::MatrixXd& x, const Eigen::MatrixXd& g, double relaxation);
+
+ private:
+  int depth_;
+  bool have_ = false;
+  Eigen::VectorXd x_, f_;
+  std::vector<Eigen::VectorXd> dx_, df_;
+};
+
+class FilmField {
+ public:
+  FilmField(const UniformGrid& grid, const Lubricant& lubricant, const FilmEffects& effects,
+            const ContactSolids& solids, const LineContactSolver::Options& options);
+
+  // The frozen fields the Reynolds system reads (null when the effect is off) [K], [-].
+  const Eigen::MatrixXd* temperature() const { return thermal_ ? &t_.t_k : nullptr; }
+  const Eigen::MatrixXd* viscosity_factor() const { return eyring_ ? &factor_ : nullptr; }
+
+  // Starts from the state's temperature when it has one of the right size, else T0; the
+  // Eyring factor is recomputed from the state (1 for a state without pressure).
+  void Begin(const ContactConditions& c, const FilmState& s);
+
+  // Recomputes the Eyring factor from a pressure solution; returns the largest change of
+  // log f [-] (0 when Newtonian).
+  double UpdateRheology(const ContactConditions& c, const FilmState& s);
+
+  struct EnergyUpdate {
+    bool ok = false;
+    double max_change_k = 0;    // max |T change| over the update (the coupling measure) [K]
+    double inner_change_k = 0;  // last change of the fixed-pressure iteration [K]
+    FilmEnergySolver::Summary summary;
+  };
+  // The film temperature at the pressure of a solution: energy solves (steady when
+  // dt_s <= 0, else implicit Euler from `previous`, whose p, h and temperature give dp/dt,
+  // dh/dt and the old level) with the shear heating of eta(p, T) iterated to a fixed point
+  // (Anderson-accelerated, damped by `relaxation`).
+  EnergyUpdate UpdateTemperature(const ContactConditions& c, const FilmState& s,
+                                 const FilmState* previous, double dt_s, double relaxation);
+
+  // Writes the current temperature into the state (thermal runs).
+  void Store(FilmState* s) const;
+
+  // Friction of a state with the current fields.
+  FilmFriction Friction(const ContactConditions& c, const FilmState& s) const;
+
+ private:
+  // eta_eff(x_i, xi_j) [Pa s] at the state's pressure with the current fields.
+  void NodeViscosity(const ContactConditions& c, const FilmState& s, int i, double* eta,
+                     bool newtonian) const;
+  double Slope(const Eigen::VectorXd& p, int i) const;  // dp/dx at node i [Pa/m]
+  void Energy(double t0_k);
+
+  UniformGrid grid_;
+  const Lubricant& lub_;
+  FilmEffects eff_;
+  ContactSolids solids_;
+  LineContactSolver::Options opt_;
+  int nz_;
+  bool thermal_, eyring_;
+  FilmTemperature t_;          // thermal only
+  Eigen::MatrixXd factor_;     // Eyring only
+  std::unique_ptr<FilmEnergySolver> energy_;
+  AndersonMixer outer_{5};  // the coupling iteration, reset by Begin
+  static constexpr int kInnerIterations = 60;
+};
+
+// Friction of a film with eta(x_i, xi_j) given per node by `viscosity(i, eta)` over nz
+// cross-film nodes (seed 004 eq. 16).
+FilmFriction IntegrateFriction(const UniformGrid& grid, const FilmState& s,
+                               const ContactConditions& c, int nz,
+                               const std::function<void(int, double*)>& viscosity);
+
+}  // namespace tehl::internal
