@@ -1,0 +1,54 @@
+// Cost of one steady solve of the film energy equation with moving-solid surface temperatures
+// (FilmEnergySolver, docs/theory.md "Energy equation and surface temperatures"), on the
+// EHL-like field of the energy tests (Hertzian pressure, b = 0.1 mm, p_H = 0.5 GPa, h_c = 0.5
+// um, u1 = 1, u2 = 1.5 m/s, reverse flow in the inlet), SAE 40-like oil (beta = 6.5e-4 1/K),
+// bronze solids. Cold = from T0; warm = from the converged temperature after the heating grew
+// by 1 % (what the thermal coupling loop of the pressure solver does).
+//   ./energy_bench --benchmark_counters_tabular=true
+#include <benchmark/benchmark.h>
+
+#include "unit/ehl/film_flow_fields.hpp"
+
+namespace {
+
+using tehl::FilmEnergySolver;
+using tehl::FilmTemperature;
+
+void Run(benchmark::State& state, bool warm) {
+  const int n = static_cast<int>(state.range(0)), nz = static_cast<int>(state.range(1));
+  const tehl::Lubricant oil = tehl::testing::EnergyTestOil();
+  const tehl::UniformGrid g = tehl::UniformGrid::AroundHertz(1e-4, n);
+  const tehl::FilmFlowField field =
+      tehl::testing::EhlLikeField(g, nz, oil, tehl::testing::EhlLikeParameters{});
+  tehl::FilmFlowField hotter = field;
+  hotter.heating_w_m3 *= 1.01;
+  FilmEnergySolver::Options o;
+  o.film_nodes = nz;
+  const FilmEnergySolver solver(g, oil, tehl::testing::Bronze(), tehl::testing::Bronze(),
+                                oil.reference_temperature_k(), o);
+  FilmTemperature converged;
+  solver.Solve(field, nullptr, 0.0, &converged);
+  FilmEnergySolver::Summary s;
+  for (auto _ : state) {
+    FilmTemperature t = warm ? converged : FilmTemperature{};
+    s = solver.Solve(warm ? hotter : field, nullptr, 0.0, &t);
+    benchmark::DoNotOptimize(t.t_k.data());
+  }
+  state.counters["iterations"] = s.iterations;
+  state.counters["balance_error"] = s.balance.RelativeError();
+  state.counters["converged"] = s.usable();
+}
+
+void BM_EnergySteadyCold(benchmark::State& state) { Run(state, false); }
+void BM_EnergySteadyWarm(benchmark::State& state) { Run(state, true); }
+
+BENCHMARK(BM_EnergySteadyCold)
+    ->Args({129, 11})->Args({257, 11})->Args({513, 11})->Args({1025, 11})->Args({513, 21})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EnergySteadyWarm)
+    ->Args({513, 11})->Args({1025, 11})
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,163 @@
+// Temperature across and along a lubricant film and on both solid surfaces: the energy
+// equation of seed 004 eq. (9) in dimensional form, coupled to the moving-heat-source surface
+// temperatures of eqs. (14)-(15) (DESIGN.md sections 4-5; docs/theory.md, "Energy equation and
+// surface temperatures"). Gear-free: the flow field comes in as arrays.
+//
+//   rho cp (dT/dt + u dT/dx + w dT/dz) - d/dz(k(p) dT/dz)
+//       = eta (du/dz)^2 - (T/rho)(d rho/dT)(dp/dt + u dp/dx)                       (eq. 9)
+//   T(x, z = 0) = T1(x),  T(x, z = h) = T2(x)                        (film and solid touch)
+//   T_s(x) = T0 + 1/sqrt(pi rho_s c_s k_s u_s) int_{x_0}^{x} q_s(x')/sqrt(x - x') dx'  (14-15)
+//   q_1 = +k dT/dz at z = 0, q_2 = -k dT/dz at z = h   (heat flux from the film into solid s)
+//   T = T0 where fluid enters the grid (at x_0 when u > 0, at x_{n-1} when u < 0).
+//
+// rho(p, T) and d rho/dT come from lubricant.density(), k(p) from lubricant.conductivity(), cp
+// from lubricant.heat_capacity_j_kgk(); eta (du/dz)^2 is an input (the pressure solver owns the
+// viscosity and the velocity profile). The cross-film velocity w is not an input: it follows
+// from continuity d(rho)/dt + d(rho u)/dx + d(rho w)/dz = 0, cell by cell.
+//
+// Discretization (finite volumes on the mapped grid x, xi = z/h, xi_j = j/(nz-1), j = 0 at
+// surface 1): vertex-centred cells, half cells at both surfaces and both ends; x-face mass
+// fluxes rho u h dxi with the temperature upwinded by the sign of each face flux (reverse flow
+// handled as it comes); cross-film mass fluxes from per-cell continuity (the column's total
+// mismatch, the discrete Reynolds residual of the given field, is spread over the column in
+// proportion to cell volume and reported as Summary::mass_defect); conduction across the film
+// central; heating and compression as cell sources; implicit Euler (BDF1) in time. The heat
+// flux into each solid is the residual of the surface half cell's balance, so the energy
+// balance closes to round-off plus the mass defect. The surface temperatures are unknowns of
+// the same sparse system (dense lower-triangular coupling by the moving-heat-source weights);
+// the system is solved by KLU, whose block-triangular ordering reduces the coupling to
+// forward substitution wherever no fluid flows against x. The temperature dependence of rho,
+// d rho/dT and of the compression term is iterated (Picard, optionally relaxed).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "tehl/ehl/grid.hpp"
+#include "tehl/ehl/surface_temperature.hpp"
+
+namespace tehl {
+
+class Lubricant;
+namespace internal {
+class FilmEnergySystem;
+}
+
+// The flow field of a film at one instant, at the n nodes of the grid and the nz cross-film
+// nodes xi_j = j/(nz-1) (j = 0 on surface 1, j = nz-1 on surface 2).
+struct FilmFlowField {
+  Eigen::VectorXd p_pa;          // pressure (negative values are taken as 0) [Pa]
+  Eigen::VectorXd h_m;           // film thickness; > 0 [m]
+  Eigen::VectorXd dpdt_pa_s;     // dp/dt at fixed x; empty = 0 (steady) [Pa/s]
+  Eigen::VectorXd dhdt_m_s;      // dh/dt at fixed x; empty = 0 (steady) [m/s]
+  Eigen::MatrixXd u_m_s;         // n x nz: velocity u(x_i, xi_j) along x [m/s]
+  Eigen::MatrixXd heating_w_m3;  // n x nz: viscous dissipation eta (du/dz)^2 >= 0 [W/m^3]
+  double u1_m_s = 0;             // speed of surface 1 in +x; > 0 with moving solids [m/s]
+  double u2_m_s = 0;             // speed of surface 2 in +x; > 0 with moving solids [m/s]
+};
+
+// Temperatures and wall heat fluxes: the solution, the previous time level, the initial guess.
+struct FilmTemperature {
+  Eigen::MatrixXd t_k;      // n x nz film temperature; columns 0, nz-1 = the surfaces [K]
+  Eigen::VectorXd t1_k;     // surface temperature of solid 1 (= column 0) [K]
+  Eigen::VectorXd t2_k;     // surface temperature of solid 2 (= column nz-1) [K]
+  Eigen::VectorXd q1_w_m2;  // heat flux from the film into solid 1 [W/m^2]
+  Eigen::VectorXd q2_w_m2;  // heat flux from the film into solid 2 [W/m^2]
+  double MaxTemperature() const;       // max over the film [K]
+  double MeanTemperature(int i) const; // cross-film mean at node i (trapezoidal in xi) [K]
+  bool Matches(int n, int nz) const;   // every field has the sizes of an n x nz film
+};
+
+// Energy budget of the film per unit face width [W/m]; generated = shear + compression.
+struct EnergyBalance {
+  double shear_w_m = 0;          // integral of eta (du/dz)^2 over the film [W/m]
+  double compression_w_m = 0;    // integral of -(T/rho)(drho/dT)(dp/dt + u dp/dx) [W/m]
+  double convected_out_w_m = 0;  // net rho cp u (T - T0) flow out through both ends [W/m]
+  double into_solid1_w_m = 0;    // integral of q1 dx [W/m]
+  double into_solid2_w_m = 0;    // integral of q2 dx [W/m]
+  double stored_w_m = 0;         // rate of change of the film's heat content (T - T0) [W/m]
+  // |generated - out - solids - stored| / max(|generated|, 1e-300) [-]
+  double RelativeError() const;
+};
+
+class FilmEnergySolver {
+ public:
+  enum class Walls {
+    kMovingSolids,       // T1, T2 from the moving-heat-source integrals (eqs. 14-15)
+    kFixedTemperature,   // T1 = T2 = T0: solids of infinite thermal inertia (analytic limits)
+  };
+  struct Options {
+    int film_nodes = 11;           // nz, cross-film nodes incl. both surfaces [-]; >= 3
+    double tolerance_k = 1e-3;     // stop when max |T_k - T_k-1| < this [K]; > 0
+    int max_iterations = 50;       // Picard iterations (T-dependence of rho) [-]; >= 1
+    double relaxation = 1.0;       // T_k = T_k-1 + relaxation (T_solved - T_k-1), (0, 1] [-]
+    Walls walls = Walls::kMovingSolids;
+    // Start each Solve from the factorization of the previous one (chord iteration), as the
+    // coupling loop of a pressure solver re-solves a slowly changing flow; refactorize when a
+    // chord step shrinks the change by less than refactor_ratio. false = factorize every Solve.
+    bool reuse_factorization = true;
+    double refactor_ratio = 0.25;  // in (0, 1) [-]
+    std::vector<std::string> Validate() const;  // every violated rule; empty = valid
+  };
+  enum class Termination { kConverged, kMaxIterations, kLinearSolverFailed };
+  struct Summary {
+    Termination termination = Termination::kLinearSolverFailed;
+    std::string message = "Solve() was not called.";
+    int iterations = 0;         // linear solves (Picard / chord steps) [-]
+    int factorizations = 0;     // KLU numeric factorizations among them [-]
+    double max_change_k = -1;   // max |T| change of the last iteration (0 for a linear problem) [K]
+    double mass_defect = 0;     // max over columns |column mass mismatch| / mass flow scale [-]
+    EnergyBalance balance;
+    double wall_time_s = 0;     // [s]
+    bool usable() const { return termination == Termination::kConverged; }
+    std::string BriefReport() const;
+  };
+
+  // Throws InputError if the options, the solids (with kMovingSolids) or the inlet
+  // temperature are invalid. The lubricant must outlive the solver.
+  FilmEnergySolver(const UniformGrid& grid,
+                   const Lubricant& lubricant,
+                   const SolidThermal& solid1,
+                   const SolidThermal& solid2,
+                   double inlet_temperature_k,
+                   const Options& options);
+
+  ~FilmEnergySolver();
+  FilmEnergySolver(FilmEnergySolver&&) noexcept;
+  FilmEnergySolver& operator=(FilmEnergySolver&&) noexcept;
+
+  const UniformGrid& grid() const { return grid_; }
+  const Options& options() const { return options_; }
+  double inlet_temperature_k() const { return t0_; }
+
+  // Everything at T0, no heat flux.
+  FilmTemperature Initial() const;
+
+  // Steady when dt_s <= 0 (previous ignored); else implicit Euler from `previous` over dt_s.
+  // t: the initial guess on entry when it Matches(n, nz) (else Initial()), the solution on
+  // exit. Throws InputError on a malformed flow field (sizes, non-finite values, h <= 0,
+  // u1 or u2 <= 0 with kMovingSolids) or a missing previous level. A solve that does not
+  // converge says so in the Summary and leaves its last iterate in t. Solve keeps the last
+  // factorization for the next call: one solver per thread.
+  Summary Solve(const FilmFlowField& flow,
+                const FilmTemperature* previous,
+                double dt_s,
+                FilmTemperature* t) const;
+
+ private:
+  UniformGrid grid_;
+  const Lubricant* lubricant_;
+  SolidThermal solid1_, solid2_;
+  double t0_;
+  Options options_;
+  MovingHeatSource source_;
+  mutable std::unique_ptr<internal::FilmEnergySystem> system_;  // kept factorization
+};
+
+std::string ToString(FilmEnergySolver::Termination t);
+std::string ToString(FilmEnergySolver::Walls w);
+
+}  // namespace tehl

@@ -1,0 +1,302 @@
+// Finite-volume assembly of the film energy equation and its KLU solve
+// (src/ehl/film_energy_system.hpp; docs/theory.md, "Energy equation and surface temperatures").
+#include "ehl/film_energy_system.hpp"
+
+#include <klu.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tehl::internal {
+
+// KLU handles: the symbolic analysis (block-triangular form, AMD per block) is kept while the
+// sparsity pattern stays the same; the numeric factorization is redone every iteration.
+struct FilmEnergySystem::Klu {
+  klu_common common;
+  klu_symbolic* symbolic = nullptr;
+  klu_numeric* numeric = nullptr;
+  Klu() { klu_defaults(&common); }
+  ~Klu() {
+    if (numeric) klu_free_numeric(&numeric, &common);
+    if (symbolic) klu_free_symbolic(&symbolic, &common);
+  }
+};
+
+FilmEnergySystem::FilmEnergySystem(const UniformGrid& grid, int nz, const MovingHeatSource& source)
+    : n_(grid.size()),
+      nz_(nz),
+      block_(nz + 2),
+      dx_(grid.dx_m()),
+      dxi_(1.0 / (nz - 1)),
+      source_(source),
+      klu_(std::make_unique<Klu>()) {}
+
+FilmEnergySystem::~FilmEnergySystem() = default;
+
+void FilmEnergySystem::ComputeMassFluxes(const FilmEnergyInputs& in,
+                                         const Eigen::MatrixXd& t_iter,
+                                         const Eigen::MatrixXd& rho,
+                                         const Eigen::MatrixXd& drho_dt,
+                                         const Eigen::MatrixXd& drho_dp) {
+  const FilmFlowField& f = *in.flow;
+  const bool transient = in.dt_s > 0;
+  volume_.resize(n_, nz_);
+  mass_.resize(n_, nz_);
+  dmass_dt_.resize(n_, nz_);
+  for (int i = 0; i < n_; ++i) {
+    const double dxc = source_.CellLength(i);
+    const double dhdt = f.dhdt_m_s.size() ? f.dhdt_m_s[i] : 0.0;
+    const double dpdt = f.dpdt_pa_s.size() ? f.dpdt_pa_s[i] : 0.0;
+    for (int j = 0; j < nz_; ++j) {
+      const double dxi = (j == 0 || j == nz_ - 1) ? 0.5 * dxi_ : dxi_;
+      volume_(i, j) = f.h_m[i] * dxc * dxi;
+      mass_(i, j) = rho(i, j) * volume_(i, j);
+      // d(rho h)/dt at fixed (x, xi); dT/dt lags one Picard iteration.
+      const double dtdt = transient ? (t_iter(i, j) - (*in.previous_t_k)(i, j)) / in.dt_s : 0.0;
+      dmass_dt_(i, j) = dxc * dxi *
+                        (rho(i, j) * dhdt + f.h_m[i] * (drho_dp(i, j) * dpdt + drho_dt(i, j) * dtdt));
+    }
+  }
+  // x-face mass fluxes: face i - 1/2 is row i; the end faces carry the end node's flux.
+  fx_.resize(n_ + 1, nz_);
+  for (int j = 0; j < nz_; ++j) {
+    const double dxi = (j == 0 || j == nz_ - 1) ? 0.5 * dxi_ : dxi_;
+    // Interior faces: product of face averages, so that the flux has the sign of the mean
+    // velocity whatever rho(T) does (the upwind pattern stays fixed during a solve).
+    fx_(0, j) = rho(0, j) * f.u_m_s(0, j) * f.h_m[0] * dxi;
+    for (int i = 1; i < n_; ++i)
+      fx_(i, j) = 0.125 * (rho(i - 1, j) + rho(i, j)) * (f.u_m_s(i - 1, j) + f.u_m_s(i, j)) *
+                  (f.h_m[i - 1] + f.h_m[i]) * dxi;
+    fx_(n_, j) = rho(n_ - 1, j) * f.u_m_s(n_ - 1, j) * f.h_m[n_ - 1] * dxi;
+  }
+  // Cross-film fluxes from continuity, marching up from surface 1 (impermeable). The column's
+  // total mismatch r_i (the given field's discrete Reynolds residual) is spread over the
+  // column by volume so that surface 2 is impermeable too; the cells keep a mass defect r_i V/V_i,
+  // which the energy balance sees as -sum cp (T - T0) r_i V/V_i.
+  gz_.resize(n_, nz_);
+  double flow_scale = 0;
+  for (int i = 0; i <= n_; ++i) flow_scale = std::max(flow_scale, std::abs(fx_.row(i).sum()));
+  mass_defect_ = 0;
+  for (int i = 0; i < n_; ++i) {
+    double r = 0, v = 0;
+    for (int j = 0; j < nz_; ++j) {
+      r += dmass_dt_(i, j) + fx_(i + 1, j) - fx_(i, j);
+      v += volume_(i, j);
+    }
+    double cum_c = 0, cum_v = 0;
+    for (int j = 0; j < nz_; ++j) {
+      cum_c += dmass_dt_(i, j) + fx_(i + 1, j) - fx_(i, j);
+      cum_v += volume_(i, j);
+      gz_(i, j) = j == nz_ - 1 ? 0.0 : -cum_c + r * cum_v / v;
+    }
+    mass_defect_ = std::max(mass_defect_, std::abs(r) / std::max(flow_scale, 1e-300));
+  }
+}
+
+void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
+                                const Eigen::MatrixXd& t_iter,
+                                const Eigen::MatrixXd& rho,
+                                const Eigen::MatrixXd& drho_dt,
+                                const Eigen::MatrixXd& drho_dp,
+                                const Eigen::VectorXd& k_w_mk) {
+  const FilmFlowField& f = *in.flow;
+  const double cp = in.cp_j_kgk;
+  const bool transient = in.dt_s > 0;
+  ComputeMassFluxes(in, t_iter, rho, drho_dt, drho_dp);
+  for (auto* m : {&ap_, &as_, &an_, &aw_, &ae_, &b_, &compression_, &comp_explicit_t_})
+    m->setZero(n_, nz_);
+  for (int i = 0; i < n_; ++i) {
+    const double dxc = source_.CellLength(i);
+    const double kappa = k_w_mk[i] * dxc / (f.h_m[i] * dxi_);  // conduction across the film
+    const double dpdt = f.dpdt_pa_s.size() ? f.dpdt_pa_s[i] : 0.0;
+    const double dpdx = i == 0        ? (f.p_pa[1] - f.p_pa[0]) / dx_
+                        : i == n_ - 1 ? (f.p_pa[n_ - 1] - f.p_pa[n_ - 2]) / dx_
+                                      : (f.p_pa[i + 1] - f.p_pa[i - 1]) / (2 * dx_);
+    for (int j = 0; j < nz_; ++j) {
+      double& ap = ap_(i, j);
+      // x faces, upwinded: inflow through the west face when F > 0, the east face when F < 0.
+      const double fw = fx_(i, j), fe = fx_(i + 1, j);
+      if (fw > 0) {
+        ap += cp * fw;
+        if (i > 0) aw_(i, j) -= cp * fw;  // else fluid enters at T0: theta = 0
+      }
+      if (fe < 0) {
+        ap -= cp * fe;
+        if (i < n_ - 1) ae_(i, j) += cp * fe;
+      }
+      // Cross-film faces: convection upwinded, conduction central.
+      if (j > 0) {
+        const double gs = gz_(i, j - 1);
+        if (gs > 0) {
+          ap += cp * gs;
+          as_(i, j) -= cp * gs;
+        }
+        ap += kappa;
+        as_(i, j) -= kappa;
+      }
+      if (j < nz_ - 1) {
+        const double gn = gz_(i, j);
+        if (gn < 0) {
+          ap -= cp * gn;
+          an_(i, j) += cp * gn;
+        }
+        ap += kappa;
+        an_(i, j) -= kappa;
+      }
+      if (transient) {
+        ap += cp * mass_(i, j) / in.dt_s;
+        b_(i, j) += cp * mass_(i, j) * ((*in.previous_t_k)(i, j) - in.t0_k) / in.dt_s;
+      }
+      b_(i, j) += f.heating_w_m3(i, j) * volume_(i, j);
+      // Compression -(T/rho) drho/dT Dp/Dt = c T: a source lagged where it heats, implicit
+      // where it cools (keeps the diagonal dominant).
+      const double c = -drho_dt(i, j) / rho(i, j) * (dpdt + f.u_m_s(i, j) * dpdx);
+      compression_(i, j) = c;
+      if (c >= 0) {
+        b_(i, j) += c * volume_(i, j) * t_iter(i, j);
+        comp_explicit_t_(i, j) = t_iter(i, j);
+      } else {
+        ap -= c * volume_(i, j);
+        b_(i, j) += c * volume_(i, j) * in.t0_k;
+        comp_explicit_t_(i, j) = std::nan("");
+      }
+    }
+  }
+  BuildMatrix(in);
+  rhs_.assign(n_ * block_, 0.0);  // surface rows: T_s - T0 - F sum G q = 0
+  for (int i = 0; i < n_; ++i)
+    for (int j = 0; j < nz_; ++j) rhs_[i * block_ + j] = b_(i, j);
+}
+
+bool FilmEnergySystem::PatternIsFactorized() const {
+  return klu_->numeric && col_ptr_ == analyzed_ptr_ && row_idx_ == analyzed_idx_;
+}
+
+bool FilmEnergySystem::Factorize() {
+  Klu& k = *klu_;
+  const int size = n_ * block_;
+  if (!k.symbolic || col_ptr_ != analyzed_ptr_ || row_idx_ != analyzed_idx_) {
+    if (k.numeric) klu_free_numeric(&k.numeric, &k.common);
+    if (k.symbolic) klu_free_symbolic(&k.symbolic, &k.common);
+    analyzed_ptr_.clear();
+    k.symbolic = klu_analyze(size, col_ptr_.data(), row_idx_.data(), &k.common);
+    if (!k.symbolic) return false;
+    analyzed_ptr_ = col_ptr_;
+    analyzed_idx_ = row_idx_;
+  }
+  // Same pattern: refactor with the previous pivot order (no pivot search), unless its pivots
+  // have become poor (reciprocal pivot growth); then a fresh factorization.
+  if (k.numeric &&
+      klu_refactor(col_ptr_.data(), row_idx_.data(), values_.data(), k.symbolic, k.numeric,
+                   &k.common) &&
+      klu_rgrowth(col_ptr_.data(), row_idx_.data(), values_.data(), k.symbolic, k.numeric,
+                  &k.common) &&
+      k.common.rgrowth > 1e-8)
+    return true;
+  if (k.numeric) klu_free_numeric(&k.numeric, &k.common);
+  k.numeric = klu_factor(col_ptr_.data(), row_idx_.data(), values_.data(), k.symbolic, &k.common);
+  return k.numeric != nullptr;
+}
+
+bool FilmEnergySystem::Correction(const Eigen::VectorXd& x, Eigen::VectorXd* delta) const {
+  Klu& k = *klu_;
+  if (!k.numeric) return false;
+  *delta = Eigen::Map<const Eigen::VectorXd>(rhs_.data(), rhs_.size());
+  for (int c = 0; c + 1 < static_cast<int>(col_ptr_.size()); ++c)
+    for (int e = col_ptr_[c]; e < col_ptr_[c + 1]; ++e) (*delta)[row_idx_[e]] -= values_[e] * x[c];
+  if (!klu_solve(k.symbolic, k.numeric, static_cast<int>(delta->size()), 1, delta->data(),
+                 &k.common))
+    return false;
+  return delta->allFinite();
+}
+
+Eigen::VectorXd FilmEnergySystem::Pack(const FilmTemperature& t, double t0_k) const {
+  Eigen::VectorXd x(n_ * block_);
+  for (int i = 0; i < n_; ++i) {
+    for (int j = 0; j < nz_; ++j) x[i * block_ + j] = t.t_k(i, j) - t0_k;
+    x[i * block_ + nz_] = t.q1_w_m2[i] * dx_;
+    x[i * block_ + nz_ + 1] = t.q2_w_m2[i] * dx_;
+  }
+  return x;
+}
+
+void FilmEnergySystem::Unpack(const Eigen::VectorXd& x, double t0_k, FilmTemperature* t) const {
+  t->t_k.resize(n_, nz_);
+  t->q1_w_m2.resize(n_);
+  t->q2_w_m2.resize(n_);
+  for (int i = 0; i < n_; ++i) {
+    for (int j = 0; j < nz_; ++j) t->t_k(i, j) = t0_k + x[i * block_ + j];
+    t->q1_w_m2[i] = x[i * block_ + nz_] / dx_;
+    t->q2_w_m2[i] = x[i * block_ + nz_ + 1] / dx_;
+  }
+  t->t1_k = t->t_k.col(0);
+  t->t2_k = t->t_k.col(nz_ - 1);
+}
+
+// Compressed-column matrix, rows of each column in increasing order (KLU needs no sorting,
+// but a fixed order lets the pattern be compared between iterations). Column (i, j) holds the
+// coefficients of T_ij in rows (i-1, j), (i, j-1), (i, j), (i, j+1), the surface relations of
+// column i, (i+1, j); column s1_i the wall-cell row (i, 0) and the surface-1 relations of
+// columns i' >= i (the moving-heat-source weights); s2_i likewise.
+void FilmEnergySystem::BuildMatrix(const FilmEnergyInputs& in) {
+  const int size = n_ * block_;
+  col_ptr_.assign(size + 1, 0);
+  row_idx_.clear();
+  values_.clear();
+  auto put = [&](int row, double v) {
+    row_idx_.push_back(row);
+    values_.push_back(v);
+  };
+  int col = 0;
+  for (int i = 0; i < n_; ++i) {
+    const int base = i * block_;
+    for (int j = 0; j < nz_; ++j, ++col) {
+      col_ptr_[col] = static_cast<int>(row_idx_.size());
+      if (i > 0 && ae_(i - 1, j) != 0) put(base - block_ + j, ae_(i - 1, j));
+      if (j > 0) put(base + j - 1, an_(i, j - 1));
+      put(base + j, ap_(i, j));
+      if (j < nz_ - 1) put(base + j + 1, as_(i, j + 1));
+      if (j == 0) put(base + nz_, 1.0);
+      if (j == nz_ - 1) put(base + nz_ + 1, 1.0);
+      if (i < n_ - 1 && aw_(i + 1, j) != 0) put(base + block_ + j, aw_(i + 1, j));
+    }
+    for (int s = 0; s < 2; ++s, ++col) {
+      col_ptr_[col] = static_cast<int>(row_idx_.size());
+      const int wall_j = s == 0 ? 0 : nz_ - 1;
+      put(base + wall_j, source_.CellLength(i) / dx_);  // the wall cell loses q dx_cell
+      if (in.fixed_walls) continue;
+      const double factor = s == 0 ? in.factor1 : in.factor2;
+      for (int ii = std::max(i, 1); ii < n_; ++ii)  // T_s(x_0) = T0: no weight at i' = 0
+        put(ii * block_ + nz_ + s, -factor * source_.Weight(ii, i) / dx_);
+    }
+  }
+  col_ptr_[size] = static_cast<int>(row_idx_.size());
+}
+
+EnergyBalance FilmEnergySystem::Balance(const FilmEnergyInputs& in, const FilmTemperature& ft) const {
+  const Eigen::MatrixXd& t = ft.t_k;
+  const double cp = in.cp_j_kgk, t0 = in.t0_k;
+  const bool transient = in.dt_s > 0;
+  EnergyBalance e;
+  for (int i = 0; i < n_; ++i)
+    for (int j = 0; j < nz_; ++j) {
+      const double theta = t(i, j) - t0;
+      e.shear_w_m += in.flow->heating_w_m3(i, j) * volume_(i, j);
+      const double tc = std::isnan(comp_explicit_t_(i, j)) ? t(i, j) : comp_explicit_t_(i, j);
+      e.compression_w_m += compression_(i, j) * volume_(i, j) * tc;
+      e.stored_w_m += cp * theta * dmass_dt_(i, j);
+      if (transient)
+        e.stored_w_m += cp * mass_(i, j) * (t(i, j) - (*in.previous_t_k)(i, j)) / in.dt_s;
+    }
+  for (int j = 0; j < nz_; ++j) {
+    if (fx_(n_, j) > 0) e.convected_out_w_m += cp * fx_(n_, j) * (t(n_ - 1, j) - t0);
+    if (fx_(0, j) < 0) e.convected_out_w_m -= cp * fx_(0, j) * (t(0, j) - t0);
+  }
+  for (int i = 0; i < n_; ++i) {
+    e.into_solid1_w_m += ft.q1_w_m2[i] * source_.CellLength(i);
+    e.into_solid2_w_m += ft.q2_w_m2[i] * source_.CellLength(i);
+  }
+  return e;
+}
+
+}  // namespace tehl::internal

@@ -1,0 +1,83 @@
+// The linear system of one Picard iteration of the film energy equation (finite volumes on
+// the mapped grid, surface temperatures as unknowns) and its KLU solution. Private to
+// FilmEnergySolver (include/tehl/ehl/film_energy.hpp; docs/theory.md gives the scheme).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "tehl/ehl/film_energy.hpp"
+
+namespace tehl::internal {
+
+// What the system needs besides the film: the fixed inputs of one Solve.
+struct FilmEnergyInputs {
+  const FilmFlowField* flow = nullptr;
+  const Eigen::MatrixXd* previous_t_k = nullptr;  // n x nz, transient only
+  double dt_s = 0;                                 // <= 0: steady
+  double cp_j_kgk = 0;                             // lubricant heat capacity [J/(kg K)]
+  double t0_k = 0;                                 // inlet temperature [K]
+  bool fixed_walls = false;                        // T1 = T2 = T0
+  double factor1 = 0, factor2 = 0;                 // 1/sqrt(pi rho c k u) of solids 1, 2
+};
+
+// Unknown / equation layout: column block i = [theta_i0 .. theta_i(nz-1), s1_i, s2_i], with
+// theta = T - T0 (no round-off from T0 itself: a film without sources solves to exactly 0) and
+// s_i = q_i dx (the wall flux scaled to the size of a temperature coefficient).
+class FilmEnergySystem {
+ public:
+  FilmEnergySystem(const UniformGrid& grid, int nz, const MovingHeatSource& source);
+  ~FilmEnergySystem();
+
+  // Assembles A and b with the properties evaluated at t_iter (n x nz): rho, drho/dT,
+  // drho/dp at every node and k at every column, evaluated by the caller.
+  void Assemble(const FilmEnergyInputs& in,
+                const Eigen::MatrixXd& t_iter,
+                const Eigen::MatrixXd& rho,
+                const Eigen::MatrixXd& drho_dt,
+                const Eigen::MatrixXd& drho_dp,
+                const Eigen::VectorXd& k_w_mk);
+  // Factorizes the assembled A (KLU; the symbolic analysis is kept while the pattern stays
+  // the same, the numeric one refactored in the old pivot order). False if KLU fails.
+  bool Factorize();
+  // Whether a factorization exists for the assembled matrix's sparsity pattern (it may be of
+  // older values: the chord iteration uses it as an approximate inverse).
+  bool PatternIsFactorized() const;
+  // delta = A_f^-1 (b - A x) with A_f the last factorized matrix. False if KLU fails or delta
+  // is not finite.
+  bool Correction(const Eigen::VectorXd& x, Eigen::VectorXd* delta) const;
+  // x = [theta, s] of a temperature field and back.
+  Eigen::VectorXd Pack(const FilmTemperature& t, double t0_k) const;
+  void Unpack(const Eigen::VectorXd& x, double t0_k, FilmTemperature* t) const;
+  // The energy budget of the assembled system at the temperatures t.
+  EnergyBalance Balance(const FilmEnergyInputs& in, const FilmTemperature& t) const;
+  double mass_defect() const { return mass_defect_; }
+
+ private:
+  struct Klu;
+  void ComputeMassFluxes(const FilmEnergyInputs& in,
+                         const Eigen::MatrixXd& t_iter,
+                         const Eigen::MatrixXd& rho,
+                         const Eigen::MatrixXd& drho_dt,
+                         const Eigen::MatrixXd& drho_dp);
+  void BuildMatrix(const FilmEnergyInputs& in);
+
+  int n_, nz_, block_;
+  double dx_, dxi_;
+  MovingHeatSource source_;
+  // Per cell (n x nz): volume, mass, dM/dt, x-face mass flux on the west face (n+1 rows:
+  // row i = face i - 1/2), cross-film flux through the north face (from j to j+1).
+  Eigen::MatrixXd volume_, mass_, dmass_dt_, fx_, gz_;
+  // Coefficients of row (i, j): aP th_ij + aS th_i(j-1) + aN th_i(j+1) + aW th_(i-1)j
+  // + aE th_(i+1)j (+ wall flux) = b, th = T - T0; compression c_ij and whether it was implicit.
+  Eigen::MatrixXd ap_, as_, an_, aw_, ae_, b_, compression_, comp_explicit_t_;
+  std::vector<int> col_ptr_, row_idx_;
+  std::vector<double> values_, rhs_;
+  std::vector<int> analyzed_ptr_, analyzed_idx_;
+  std::unique_ptr<Klu> klu_;
+  double mass_defect_ = 0;
+};
+
+}  // namespace tehl::internal

@@ -1,0 +1,365 @@
+// Film energy equation with moving-solid surface temperatures (seed 004 eqs. 9-15, DESIGN.md
+// sections 4-5): analytic film profiles, exact invariants, the energy balance of VALIDATION.md
+// section 4, the transient limit and order, grid convergence and a low-speed case.
+#include "tehl/ehl/film_energy.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "support/test_lubricants.hpp"
+#include "tehl/error.hpp"
+#include "unit/ehl/film_flow_fields.hpp"
+
+namespace tehl {
+namespace {
+
+using testing::Bronze;
+using testing::EhlLikeField;
+using testing::EhlLikeParameters;
+using testing::EnergyTestOil;
+
+constexpr double kT0 = testing::kReferenceT0;
+
+FilmEnergySolver::Options Opts(int nz, FilmEnergySolver::Walls walls) {
+  FilmEnergySolver::Options o;
+  o.film_nodes = nz;
+  o.walls = walls;
+  o.tolerance_k = 1e-9;
+  return o;
+}
+
+// A fully developed film between fixed walls: h, dp/dx and u(xi) the same at every x, with
+// u = U xi + P xi (1 - xi) and heating eta (du/dz)^2, eta = 1 Pa s, h = 1 um, U = 10 m/s.
+struct ParallelFilm {
+  double eta = 1.0, h = 1e-6, u = 10.0, p = 0.0;
+  FilmFlowField Field(const UniformGrid& g, int nz) const {
+    FilmFlowField f;
+    f.p_pa = Eigen::VectorXd::Zero(g.size());
+    f.h_m = Eigen::VectorXd::Constant(g.size(), h);
+    f.u_m_s.resize(g.size(), nz);
+    f.heating_w_m3.resize(g.size(), nz);
+    for (int j = 0; j < nz; ++j) {
+      const double xi = static_cast<double>(j) / (nz - 1);
+      const double dudxi = u + p * (1 - 2 * xi);
+      f.u_m_s.col(j).setConstant(u * xi + p * xi * (1 - xi));
+      f.heating_w_m3.col(j).setConstant(eta * dudxi * dudxi / (h * h));
+    }
+    f.u1_m_s = 0;
+    f.u2_m_s = u;
+    return f;
+  }
+  // -k/h^2 T'' = (eta/h^2)(a + b xi)^2, T(0) = T(1) = T0, a = U + P, b = -2P: with
+  // F(xi) = (a + b xi)^4 / (12 b^2), T - T0 = -(eta/k)[F(xi) - F(0) - (F(1) - F(0)) xi]
+  // (integrate twice; F'' = (a + b xi)^2). P = 0: T - T0 = eta U^2/(2k) xi (1 - xi).
+  double Exact(double xi, double k) const {
+    if (p == 0) return eta * u * u / (2 * k) * xi * (1 - xi);
+    const double a = u + p, b = -2 * p;
+    auto f = [&](double s) { return std::pow(a + b * s, 4) / (12 * b * b); };
+    return -(eta / k) * (f(xi) - f(0) - (f(1) - f(0)) * xi);
+  }
+};
+
+// The film at the outlet end of a 2 mm long grid, 15 thermal entry lengths
+// rho cp U h^2 / k = 0.13 mm long: fully developed.
+Eigen::MatrixXd SolveParallel(const ParallelFilm& pf, int nz, FilmTemperature* out = nullptr) {
+  const Lubricant oil = testing::IsoviscousOil(pf.eta);  // rho 870, k 0.13, cp 2000, beta 0
+  const UniformGrid g(0.0, 2e-3, 41);
+  FilmEnergySolver solver(g, oil, Bronze(), Bronze(), kT0,
+                          Opts(nz, FilmEnergySolver::Walls::kFixedTemperature));
+  FilmTemperature t;
+  const auto s = solver.Solve(pf.Field(g, nz), nullptr, 0.0, &t);
+  EXPECT_TRUE(s.usable()) << s.BriefReport();
+  EXPECT_EQ(s.iterations, 1);  // constant properties: a linear problem
+  // The field conserves mass cell by cell (no defect): the discrete energy balance is exact.
+  EXPECT_LT(s.mass_defect, 1e-14);
+  EXPECT_LT(s.balance.RelativeError(), 1e-10) << s.BriefReport();
+  if (out) *out = t;
+  return t.t_k;
+}
+
+TEST(FilmEnergySolver, PlaneCouetteGivesTheParabolicProfileBetweenFixedWalls) {
+  // T - T0 = eta U^2/(2k) xi (1 - xi), max eta U^2/(8k) at mid-film; the three-point
+  // conduction stencil is exact for a quadratic, so only round-off remains. The heat flux into
+  // each wall is k dT/dz = eta U^2/(2h), half of the heat generated, eta U^2/h per unit area.
+  const ParallelFilm pf;
+  FilmTemperature t;
+  const Eigen::MatrixXd temp = SolveParallel(pf, 21, &t);
+  const int last = static_cast<int>(temp.rows()) - 1;
+  const double k = 0.13, peak = pf.eta * pf.u * pf.u / (8 * k);
+  for (int j = 0; j < 21; ++j) {
+    const double xi = j / 20.0;
+    EXPECT_NEAR(temp(last, j) - kT0, pf.Exact(xi, k), 1e-9 * peak) << j;
+  }
+  EXPECT_NEAR(temp(last, 10) - kT0, peak, 1e-9 * peak);
+  const double wall_flux = pf.eta * pf.u * pf.u / (2 * pf.h);
+  EXPECT_NEAR(t.q1_w_m2[last], wall_flux, 1e-9 * wall_flux);
+  EXPECT_NEAR(t.q2_w_m2[last], wall_flux, 1e-9 * wall_flux);
+}
+
+TEST(FilmEnergySolver, CouettePoiseuilleProfileConvergesAtSecondOrderInFilmNodes) {
+  // Quartic exact profile (ParallelFilm::Exact with P = 2U, no reverse flow). The three-point
+  // stencil applied to a quartic gives T'' + (dxi^2/12) T'''' exactly, and T'''' = -2 b^2 eta/k
+  // is constant, so the discrete error e solves -e'' = -(dxi^2/12)(2 b^2 eta/k) exactly
+  // (a quadratic, reproduced exactly by the stencil) with e = 0 on the walls:
+  //   T_h - T = -(dxi^2 b^2 eta / (12 k)) xi (1 - xi)      (second order in 1/(nz-1)).
+  ParallelFilm pf;
+  pf.p = 2 * pf.u;
+  const double k = 0.13;
+  double scale = 0;
+  for (int j = 0; j <= 100; ++j) scale = std::max(scale, std::abs(pf.Exact(j / 100.0, k)));
+  std::vector<double> errors;
+  for (int nz : {11, 21, 41, 81}) {
+    const Eigen::MatrixXd temp = SolveParallel(pf, nz);
+    double worst = 0;
+    for (int j = 0; j < nz; ++j)
+      worst = std::max(worst, std::abs(temp(temp.rows() - 1, j) - kT0 -
+                                       pf.Exact(static_cast<double>(j) / (nz - 1), k)));
+    errors.push_back(worst / scale);
+    const double dxi = 1.0 / (nz - 1), b = -2 * pf.p;
+    const Eigen::MatrixXd& tl = temp;
+    for (int j = 0; j < nz; ++j) {
+      const double xi = j * dxi;
+      const double predicted = -(dxi * dxi * b * b * pf.eta / (12 * k)) * xi * (1 - xi);
+      EXPECT_NEAR(tl(tl.rows() - 1, j) - kT0 - pf.Exact(xi, k), predicted, 1e-9 * scale) << j;
+    }
+  }
+  for (size_t i = 1; i < errors.size(); ++i) {
+    const double order = std::log2(errors[i - 1] / errors[i]);
+    std::printf("nz refinement %zu: relative error %.3e, order %.3f\n", i, errors[i], order);
+    EXPECT_NEAR(order, 2.0, 0.1) << i;
+  }
+}
+
+TEST(FilmEnergySolver, WithoutHeatingTheInletTemperatureStaysExactly) {
+  // No dissipation, beta = 0 (no compression work), reverse flow in the inlet, compressible
+  // rho(p), moving solids: every term of the scheme is a difference T_ij - T_neighbour or a
+  // flux q, so T = T0, q = 0 solves it exactly; steady and transient.
+  const Lubricant oil = EnergyTestOil(0.0);
+  const UniformGrid g = UniformGrid::AroundHertz(1e-4, 129);
+  FilmFlowField f = EhlLikeField(g, 11, oil, EhlLikeParameters{});
+  ASSERT_LT(f.u_m_s.minCoeff(), 0);  // reverse flow present
+  f.heating_w_m3.setZero();
+  f.dpdt_pa_s = Eigen::VectorXd::Constant(g.size(), 1e9);
+  f.dhdt_m_s = Eigen::VectorXd::Constant(g.size(), -1e-4);
+  FilmEnergySolver solver(g, oil, Bronze(), Bronze(), kT0,
+                          Opts(11, FilmEnergySolver::Walls::kMovingSolids));
+  FilmTemperature t;
+  auto s = solver.Solve(f, nullptr, 0.0, &t);
+  ASSERT_TRUE(s.usable()) << s.BriefReport();
+  EXPECT_LT((t.t_k.array() - kT0).abs().maxCoeff(), 1e-12 * kT0);
+  EXPECT_LT(t.q1_w_m2.cwiseAbs().maxCoeff(), 1e-6);  // W/m^2, against ~1e7 when heated
+  const FilmTemperature prev = solver.Initial();
+  s = solver.Solve(f, &prev, 1e-6, &t);
+  ASSERT_TRUE(s.usable()) << s.BriefReport();
+  EXPECT_LT((t.t_k.array() - kT0).abs().maxCoeff(), 1e-12 * kT0);
+}
+
+struct EhlRun {
+  FilmEnergySolver::Summary summary;
+  FilmTemperature t;
+  FilmFlowField f;
+};
+
+EhlRun SolveEhl(int n, int nz, const EhlLikeParameters& c, double beta = 6.5e-4) {
+  const Lubricant oil = EnergyTestOil(beta);
+  const UniformGrid g = UniformGrid::AroundHertz(c.half_width_m, n);
+  EhlRun r;
+  r.f = EhlLikeField(g, nz, oil, c);
+  FilmEnergySolver::Options o = Opts(nz, FilmEnergySolver::Walls::kMovingSolids);
+  o.tolerance_k = 1e-6;
+  FilmEnergySolver solver(g, oil, Bronze(), Bronze(), kT0, o);
+  r.summary = solver.Solve(r.f, nullptr, 0.0, &r.t);
+  return r;
+}
+
+TEST(FilmEnergySolver, EnergyBalanceClosesWithinOnePercentWithAndWithoutReverseFlow) {
+  // VALIDATION.md section 4: heat generated (shear + compression) = convected out + conducted
+  // into both solids, within 1 %. Rolling with sliding (u1 = 1, u2 = 1.5 m/s, SRR 0.4).
+  for (double radius : {0.1, 0.01}) {  // inlet film 2.7 h_c (no reverse flow), 13 h_c
+    EhlLikeParameters c;
+    c.radius_m = radius;
+    const EhlRun r = SolveEhl(257, 11, c);
+    ASSERT_TRUE(r.summary.usable()) << r.summary.BriefReport();
+    EXPECT_EQ(r.f.u_m_s.minCoeff() < 0, radius == 0.01);
+    const EnergyBalance& b = r.summary.balance;
+    std::printf("R = %.2f m: shear %.4g, compression %.4g, out %.4g, solid1 %.4g, solid2 %.4g"
+                " W/m; error %.2e, mass defect %.2e, %d iterations, %.2f ms, T_max - T0 = %.3f K\n",
+                radius, b.shear_w_m, b.compression_w_m, b.convected_out_w_m, b.into_solid1_w_m,
+                b.into_solid2_w_m, b.RelativeError(), r.summary.mass_defect,
+                r.summary.iterations, r.summary.wall_time_s * 1e3, r.t.MaxTemperature() - kT0);
+    EXPECT_LT(b.RelativeError(), 0.01);
+    EXPECT_GT(b.convected_out_w_m, 0);
+    EXPECT_GT(b.into_solid1_w_m, 0);
+    EXPECT_GT(b.into_solid2_w_m, 0);
+    // The surfaces are the moving-heat-source integrals of the fluxes the film delivers.
+    const MovingHeatSource src(UniformGrid::AroundHertz(c.half_width_m, 257));
+    const Eigen::VectorXd rise1 = src.Rise(Bronze(), c.u1_m_s, r.t.q1_w_m2);
+    const Eigen::VectorXd rise2 = src.Rise(Bronze(), c.u2_m_s, r.t.q2_w_m2);
+    const double scale = r.t.MaxTemperature() - kT0;
+    EXPECT_LT((r.t.t1_k.array() - kT0 - rise1.array()).abs().maxCoeff(), 1e-6 * scale);
+    EXPECT_LT((r.t.t2_k.array() - kT0 - rise2.array()).abs().maxCoeff(), 1e-6 * scale);
+  }
+}
+
+TEST(FilmEnergySolver, TemperatureRiseConvergesInFilmNodesAndGridNodes) {
+  // Case 4 with reverse flow: T_max - T0 changes by at most 2 % between nz = 11 and 21 and
+  // between n = 257 and 513.
+  EhlLikeParameters c;
+  const double coarse = SolveEhl(257, 11, c).t.MaxTemperature() - kT0;
+  const double fine_z = SolveEhl(257, 21, c).t.MaxTemperature() - kT0;
+  const double fine_x = SolveEhl(513, 11, c).t.MaxTemperature() - kT0;
+  std::printf("T_max - T0: %.4f K (n 257, nz 11), %.4f K (nz 21), %.4f K (n 513)\n", coarse,
+              fine_z, fine_x);
+  EXPECT_LT(std::abs(fine_z - coarse), 0.02 * fine_z);
+  EXPECT_LT(std::abs(fine_x - coarse), 0.02 * fine_x);
+}
+
+TEST(FilmEnergySolver, PureRollingAtLowSpeedWarmsTheFilmByLessThanOneKelvin) {
+  // u1 = u2 = 0.05 m/s, thin film 0.1 um: no Couette shear; the heat is the Poiseuille
+  // dissipation and the compression work only. Estimate: compression ~ beta T0 um p_H h_c
+  // ~ 6.5e-4 * 313 * 0.05 * 5e8 * 1e-7 = 0.5 W/m over the inlet flank; the surface rise of a
+  // 1 W/m source over 2b = 0.2 mm is F q 2 sqrt(2b) ~ 1/(sqrt(pi 7890 375 55 0.05)) *
+  // (1 / 2e-4) * 2 sqrt(2e-4) ~ 0.03 K: far below 1 K. The solve must also converge here,
+  // where the solids are slow (F large).
+  EhlLikeParameters c;
+  c.u1_m_s = c.u2_m_s = 0.05;
+  c.central_film_m = 1e-7;
+  const EhlRun r = SolveEhl(257, 11, c);
+  ASSERT_TRUE(r.summary.usable()) << r.summary.BriefReport();
+  const double rise = r.t.MaxTemperature() - kT0;
+  std::printf("low speed: T_max - T0 = %.4f K, balance error %.2e, %d iterations\n", rise,
+              r.summary.balance.RelativeError(), r.summary.iterations);
+  EXPECT_LT(rise, 1.0);
+  EXPECT_GT(rise, 0.0);
+  EXPECT_LT(r.summary.balance.RelativeError(), 0.01);
+}
+
+// Transient: a film with constant properties (beta = 0: linear) whose heating doubles at t = 0.
+struct TransientCase {
+  Lubricant oil = EnergyTestOil(0.0);
+  UniformGrid g = UniformGrid::AroundHertz(1e-4, 65);
+  EhlLikeParameters c = [] {
+    EhlLikeParameters p;
+    p.radius_m = 0.1;  // no reverse flow
+    return p;
+  }();
+  FilmFlowField before = EhlLikeField(g, 11, oil, c);
+  FilmFlowField after = [this] {
+    FilmFlowField f = before;
+    f.heating_w_m3 *= 2;
+    return f;
+  }();
+  FilmEnergySolver solver{g, oil, Bronze(), Bronze(), kT0,
+                          Opts(11, FilmEnergySolver::Walls::kMovingSolids)};
+  FilmTemperature Steady(const FilmFlowField& f) const {
+    FilmTemperature t;
+    EXPECT_TRUE(solver.Solve(f, nullptr, 0.0, &t).usable());
+    return t;
+  }
+  FilmTemperature March(int steps, double t_end) const {
+    FilmTemperature t = Steady(before), next;
+    for (int k = 0; k < steps; ++k) {
+      next = t;
+      const auto s = solver.Solve(after, &t, t_end / steps, &next);
+      EXPECT_TRUE(s.usable()) << s.BriefReport();
+      EXPECT_LT(s.balance.RelativeError(), 0.01) << "step " << k;  // VALIDATION.md section 4
+      t = next;
+    }
+    return t;
+  }
+};
+
+TEST(FilmEnergySolver, StepInHeatingRelaxesToTheNewSteadyState) {
+  // After many residence times (grid length 0.6 mm at >= 1 m/s: 0.6 ms) the implicit march
+  // reaches the steady solution of the new heating.
+  const TransientCase tc;
+  const FilmTemperature steady = tc.Steady(tc.after);
+  const FilmTemperature marched = tc.March(400, 0.02);
+  const double diff = (marched.t_k - steady.t_k).cwiseAbs().maxCoeff();
+  std::printf("marched vs steady: max |dT| = %.3e K (rise %.3f K)\n", diff,
+              steady.MaxTemperature() - kT0);
+  EXPECT_LT(diff, 1e-6);
+}
+
+TEST(FilmEnergySolver, ImplicitEulerIsFirstOrderInTime) {
+  // The film relaxes by conduction to the (quasi-steady) surfaces in rho cp h^2/(pi^2 k):
+  // 0.3 us at h_c = 0.5 um, 2 us in the 1.35 um inlet. March to t = 2 us with 10 ... 160 steps:
+  // successive differences halve (Richardson: e(dt) - e(dt/2) = C dt/2 + O(dt^2)).
+  const TransientCase tc;
+  std::vector<Eigen::MatrixXd> sol;
+  for (int steps : {10, 20, 40, 80, 160}) sol.push_back(tc.March(steps, 2e-6).t_k);
+  std::vector<double> d;
+  for (size_t i = 1; i < sol.size(); ++i) d.push_back((sol[i] - sol[i - 1]).cwiseAbs().maxCoeff());
+  for (size_t i = 1; i < d.size(); ++i) {
+    const double order = std::log2(d[i - 1] / d[i]);
+    std::printf("dt refinement %zu: difference %.3e K, order %.3f\n", i, d[i], order);
+    if (i >= 2) EXPECT_NEAR(order, 1.0, 0.1) << i;
+  }
+}
+
+TEST(FilmEnergySolver, PicardLimitIsReportedNotThrown) {
+  EhlLikeParameters c;
+  const Lubricant oil = EnergyTestOil(6.5e-4);
+  const UniformGrid g = UniformGrid::AroundHertz(c.half_width_m, 65);
+  FilmEnergySolver::Options o = Opts(11, FilmEnergySolver::Walls::kMovingSolids);
+  o.max_iterations = 1;
+  FilmEnergySolver solver(g, oil, Bronze(), Bronze(), kT0, o);
+  FilmTemperature t;
+  const auto s = solver.Solve(EhlLikeField(g, 11, oil, c), nullptr, 0.0, &t);
+  EXPECT_EQ(s.termination, FilmEnergySolver::Termination::kMaxIterations);
+  EXPECT_NE(s.message.find("Picard"), std::string::npos) << s.message;
+  EXPECT_TRUE(t.t_k.allFinite());
+}
+
+TEST(FilmEnergySolverOptions, RejectsEveryBadField) {
+  FilmEnergySolver::Options o;
+  EXPECT_TRUE(o.Validate().empty());
+  o.film_nodes = 2;
+  o.tolerance_k = 0;
+  o.max_iterations = 0;
+  o.relaxation = 1.5;
+  EXPECT_EQ(o.Validate().size(), 4u);
+  const Lubricant oil = EnergyTestOil();
+  const UniformGrid g(0.0, 1e-3, 11);
+  EXPECT_THROW(FilmEnergySolver(g, oil, Bronze(), Bronze(), kT0, o), InputError);
+  EXPECT_THROW(FilmEnergySolver(g, oil, Bronze(), Bronze(), -1.0, FilmEnergySolver::Options{}),
+               InputError);
+  EXPECT_THROW(FilmEnergySolver(g, oil, SolidThermal{}, Bronze(), kT0, FilmEnergySolver::Options{}),
+               InputError);
+}
+
+TEST(FilmEnergySolver, RejectsAMalformedFlowField) {
+  const Lubricant oil = EnergyTestOil();
+  const UniformGrid g = UniformGrid::AroundHertz(1e-4, 33);
+  FilmEnergySolver solver(g, oil, Bronze(), Bronze(), kT0, FilmEnergySolver::Options{});
+  const FilmFlowField good = EhlLikeField(g, 11, oil, EhlLikeParameters{});
+  FilmTemperature t;
+  auto expect_key = [&](FilmFlowField f, const std::string& key, const FilmTemperature* prev,
+                        double dt) {
+    try {
+      solver.Solve(f, prev, dt, &t);
+      ADD_FAILURE() << "no InputError for " << key;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.problems().front().key, key) << e.what();
+    }
+  };
+  FilmFlowField f = good;
+  f.u1_m_s = 0;
+  expect_key(f, "FilmFlowField::u1_m_s", nullptr, 0);
+  f = good;
+  f.h_m[3] = -1e-9;
+  expect_key(f, "FilmFlowField::h_m", nullptr, 0);
+  f = good;
+  f.u_m_s.resize(33, 10);
+  expect_key(f, "FilmFlowField::u_m_s", nullptr, 0);
+  f = good;
+  f.heating_w_m3(2, 2) = NAN;
+  expect_key(f, "FilmFlowField::heating_w_m3", nullptr, 0);
+  expect_key(good, "previous", nullptr, 1e-6);
+}
+
+}  // namespace
+}  // namespace tehl
