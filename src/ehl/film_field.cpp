@@ -15,6 +15,8 @@
 namespace tehl::internal {
 namespace {
 
+constexpr double kEyringRelaxation = 0.5;
+
 // Ree-Eyring shear rate with an optional limiting shear stress [1/s].
 struct EyringLaw {
   double tau0 = 0;    // Eyring stress [Pa]
@@ -37,17 +39,19 @@ struct EyringLaw {
   }
 };
 
-// Wall stress tau_1 with h int gdot(tau_1 + h p' xi) dxi = du (trapezoidal in xi): the
-// integral increases with tau_1, so Newton's method safeguarded by bisection converges.
+// Wall stress tau_1 with h int gdot(tau_1 + h p' xi) dxi = du (trapezoidal in xi). The
+// integral increases with tau_1: a bracket is grown from the Couette estimate
+// tau0 asinh(eta_h du / (h tau0)) (exact for a uniform film without pressure gradient, eta_h
+// the harmonic mean), then Newton's method safeguarded by bisection.
 double EyringWallStress(const EyringLaw& law, const double* eta, int nz, double h, double dpdx,
-                        double du, double guess) {
+                        double du, double /*newtonian_guess*/) {
   const double g = h * dpdx;  // tau(xi) = tau_1 + g xi
-  double lo = -1e12, hi = 1e12;
+  double lo_limit = -1e300, hi_limit = 1e300;
   if (law.tau_l > 0) {
     // Keep |tau| < tau_l across the film.
-    lo = -law.tau_l * (1 - 1e-9) - std::min(0.0, g);
-    hi = law.tau_l * (1 - 1e-9) - std::max(0.0, g);
-    if (lo >= hi) return 0.5 * (lo + hi);
+    lo_limit = -law.tau_l * (1 - 1e-9) - std::min(0.0, g);
+    hi_limit = law.tau_l * (1 - 1e-9) - std::max(0.0, g);
+    if (lo_limit >= hi_limit) return 0.5 * (lo_limit + hi_limit);
   }
   auto residual = [&](double t1, double* slope) {
     double f = 0, d = 0;
@@ -61,18 +65,36 @@ double EyringWallStress(const EyringLaw& law, const double* eta, int nz, double 
     *slope = d * scale;
     return f * scale - du;
   };
-  double t = std::clamp(guess, lo, hi);
-  for (int it = 0; it < 200; ++it) {
-    double slope;
+  double inv_mean = 0;
+  for (int j = 0; j < nz; ++j) inv_mean += ((j == 0 || j == nz - 1) ? 0.5 : 1.0) / eta[j];
+  const double eta_h = (nz - 1.0) / inv_mean;
+  double t = law.tau0 * std::asinh(eta_h * du / (h * law.tau0)) - 0.5 * g;
+  t = std::clamp(t, lo_limit, hi_limit);
+  // Grow a bracket [lo, hi] around the root.
+  double slope;
+  double lo = t, hi = t;
+  double r_lo = residual(lo, &slope), r_hi = r_lo;
+  for (double step = law.tau0; r_lo > 0 && lo > lo_limit; step *= 2) {
+    hi = lo;
+    r_hi = r_lo;
+    lo = std::max(lo - step, lo_limit);
+    r_lo = residual(lo, &slope);
+  }
+  for (double step = law.tau0; r_hi < 0 && hi < hi_limit; step *= 2) {
+    lo = hi;
+    r_lo = r_hi;
+    hi = std::min(hi + step, hi_limit);
+    r_hi = residual(hi, &slope);
+  }
+  if (r_lo > 0) return lo;
+  if (r_hi < 0) return hi;
+  t = 0.5 * (lo + hi);
+  for (int it = 0; it < 100; ++it) {
     const double r = residual(t, &slope);
     if (r > 0) hi = t; else lo = t;
-    if (std::abs(r) <= 1e-12 * (std::abs(du) + 1e-12)) break;
+    if (std::abs(r) <= 1e-12 * std::abs(du) || hi - lo <= 1e-13 * (std::abs(t) + law.tau0)) break;
     double next = t - r / slope;
     if (!(next > lo && next < hi) || !std::isfinite(next)) next = 0.5 * (lo + hi);
-    if (std::abs(next - t) <= 1e-14 * (std::abs(t) + law.tau0)) {
-      t = next;
-      break;
-    }
     t = next;
   }
   return t;
@@ -142,26 +164,29 @@ double FilmField::UpdateRheology(const ContactConditions& c, const FilmState& s)
   if (!eyring_) return 0.0;
   const EyringParameters& e = *lub_.eyring();
   const int n = grid_.size();
-  std::vector<double> eta(nz_), eta_eff(nz_), u(nz_), tau(nz_);
+  std::vector<double> eta(nz_);
   double change = 0.0;
   for (int i = 0; i < n; ++i) {
     NodeViscosity(c, s, i, eta.data(), true);
-    for (int j = 0; j < nz_; ++j) eta_eff[j] = eta[j] * factor_(i, j);
-    const double h = s.h_m[i], dpdx = Slope(s.p_pa, i), du = c.u2_m_s - c.u1_m_s;
-    CrossFilmProfile(eta_eff.data(), nz_, h, dpdx, c.u1_m_s, c.u2_m_s, u.data(), tau.data());
+    // The factor follows the sliding (Couette) shear stress: dp/dx = 0 in the root, so f
+    // depends on p, T and h but not on the pressure gradient, whose spike would make the
+    // frozen-factor iteration oscillate (docs/theory.md, "Ree-Eyring film").
+    const double h = s.h_m[i], dpdx = 0.0, du = c.u2_m_s - c.u1_m_s;
     EyringLaw law;
     law.tau0 = e.eyring_stress_pa;
     law.tau_l = (e.limiting_stress_pa > 0 || e.limiting_stress_slope > 0)
                     ? e.limiting_stress_pa + e.limiting_stress_slope * std::max(s.p_pa[i], 0.0)
                     : 0.0;
-    const double t1 = EyringWallStress(law, eta.data(), nz_, h, dpdx, du, tau[0]);
+    const double t1 = EyringWallStress(law, eta.data(), nz_, h, dpdx, du, 0.0);
     for (int j = 0; j < nz_; ++j) {
       const double t = t1 + h * dpdx * j / (nz_ - 1.0);
       const double rate = law.Rate(t, eta[j]);
       const double f = std::abs(rate) > 0 ? t / (eta[j] * rate) : 1.0;
-      const double fnew = std::isfinite(f) && f > 0 ? std::min(f, 1.0) : 1.0;
-      change = std::max(change, std::abs(std::log(fnew / factor_(i, j))));
-      factor_(i, j) = fnew;
+      const double target = std::isfinite(f) && f > 0 ? std::min(f, 1.0) : 1.0;
+      // Under-relaxed in log f: the factor spans many decades across the contact.
+      const double step = std::log(target / factor_(i, j));
+      change = std::max(change, std::abs(step));
+      factor_(i, j) *= std::exp(kEyringRelaxation * step);
     }
   }
   return change;

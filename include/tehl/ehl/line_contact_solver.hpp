@@ -104,6 +104,7 @@ class LineContactSolver {
     // under-relaxed) until the temperature changes by less than thermal_tolerance_k.
     int film_nodes = 11;              // nodes across the film, both surfaces included [-]
     double thermal_tolerance_k = 0.01;     // [K]
+    double coupling_pressure_tolerance = 1e-4;  // non-Newtonian: max |p change| / p_max [-]
     int max_coupling_iterations = 40;      // [-]
     double thermal_relaxation = 0.8;       // T <- T + relaxation (T_energy - T) [-]
     std::vector<std::string> Validate() const;  // every violated rule; empty = valid
