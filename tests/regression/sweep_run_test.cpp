@@ -1,0 +1,147 @@
+// `tehl sweep` end to end at reduced resolution (seed 004 SAE 40 case, 129 nodes, 40 steps):
+// the index against the scenes run one by one, a scene that does not converge recorded while
+// the others complete, and --resume after the sweep was killed.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <fcntl.h>
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <thread>
+
+#include "regression/sweep_support.hpp"
+#include "tehl/scene/mesh_cycle_scene.hpp"
+#include "unit/cli/run_tehl.hpp"
+
+namespace tehl {
+namespace {
+namespace fs = std::filesystem;
+using testing::ReadIndex;
+
+std::string OutDir(const std::string& study) {
+  return (fs::path(study).parent_path() / "out").string();
+}
+
+TEST(Sweep, IndexEqualsTheScenesRunOneByOne) {
+  const std::string study = testing::ReducedStudy(
+      "sweep_index", "[[vary]]\nkey = \"operating.power_w\"\nvalues = [5000.0, 10000.0, 15000.0]\n");
+  const std::string out = OutDir(study);
+  const testing::RunResult r = testing::RunTehl("sweep -j 2 -q -o '" + out + "' '" + study + "'");
+  ASSERT_TRUE(r.exited) << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const testing::IndexTable t = ReadIndex(out + "/index.h5");
+  ASSERT_EQ(t.scene.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(t.status[i], "ok");
+    EXPECT_EQ(t.computed[i], 1.0);
+    // Reference: the same scene file run by the library in this process, summarized by
+    // definition (docs/studies.md): min of h_min, h_c at PitchStep(), min of h_c, max of p_max.
+    MeshCycleRunOptions o;
+    o.quiet = true;
+    o.write_files = false;
+    char name[32];
+    std::snprintf(name, sizeof name, "scene_%04d.toml", i);
+    const MeshCycleResult m = RunMeshCycle(out + "/scenes/" + name, o);
+    ASSERT_TRUE(m.converged());
+    double h_min = 1e300, h_c_min = 1e300, p_max = 0;
+    for (const auto& k : m.steps) {
+      h_min = std::min(h_min, k.h_min_m);
+      h_c_min = std::min(h_c_min, k.h_c_m);
+      p_max = std::max(p_max, k.p_max_pa);
+    }
+    const double rel = 1e-12;
+    EXPECT_NEAR(t.h_min_min[i], h_min, rel * h_min) << name;
+    EXPECT_NEAR(t.h_c_pitch[i], m.steps[m.PitchStep()].h_c_m, rel * h_min) << name;
+    EXPECT_NEAR(t.h_c_min[i], h_c_min, rel * h_c_min) << name;
+    EXPECT_NEAR(t.p_max_max[i], p_max, rel * p_max) << name;
+    EXPECT_TRUE(fs::exists(t.result[i])) << t.result[i];
+  }
+  // Seed 004 conclusion 4.3: more load, thinner film and higher pressure.
+  EXPECT_GT(t.h_min_min[0], t.h_min_min[2]);
+  EXPECT_LT(t.p_max_max[0], t.p_max_max[2]);
+  // The CSV index: a header and one row per scene.
+  const std::string csv = testing::ReadAll(out + "/index.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4) << csv;
+  EXPECT_EQ(csv.rfind("scene,operating.power_w,h_min_min_m", 0), 0u) << csv;
+}
+
+TEST(Sweep, SceneThatDoesNotConvergeIsRecordedAndTheOthersComplete) {
+  // One Newton iteration cannot solve the steady film at A: scene 1 ends not converged.
+  const std::string study = testing::ReducedStudy(
+      "sweep_fail", "[[vary]]\nkey = \"numerics.max_newton_iterations\"\nvalues = [100, 1, 100]\n");
+  const std::string out = OutDir(study);
+  const testing::RunResult r = testing::RunTehl("sweep -j 2 -q -o '" + out + "' '" + study + "'");
+  ASSERT_TRUE(r.exited) << r.err;
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;  // a scene not usable: exit 1 (STYLE.md 5)
+  const testing::IndexTable t = ReadIndex(out + "/index.h5");
+  ASSERT_EQ(t.status.size(), 3u);
+  EXPECT_EQ(t.status[0], "ok");
+  EXPECT_EQ(t.status[1], "not_converged");
+  EXPECT_EQ(t.status[2], "ok");
+  EXPECT_GT(t.h_min_min[0], 0.0);
+  EXPECT_EQ(t.h_min_min[0], t.h_min_min[2]);  // the same case, twice
+}
+
+// Modification time of a file [ns since the epoch].
+long long MtimeNs(const std::string& path) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) return -1;
+  return static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec;
+}
+
+TEST(Sweep, ResumeAfterKillRunsOnlyTheUnfinishedScenes) {
+  const std::string study = testing::ReducedStudy(
+      "sweep_resume",
+      "[[vary]]\nkey = \"operating.power_w\"\nvalues = [4000.0, 6000.0, 8000.0, 10000.0]\n");
+  const std::string out = OutDir(study);
+  // A sweep on one thread, killed (SIGKILL) as soon as its first result file appears.
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const int devnull = open("/dev/null", O_WRONLY);
+    dup2(devnull, 1);
+    dup2(devnull, 2);
+    execl(TEHL_BINARY, "tehl", "sweep", "-j", "1", "-q", "-o", out.c_str(), study.c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(out + "/scenes/scene_0000.h5") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the sweep ended before it could be killed";
+  ASSERT_FALSE(fs::exists(out + "/index.h5"));  // the index comes only at the end
+
+  std::map<int, long long> finished;  // scene -> mtime of its result before the rerun
+  for (int i = 0; i < 4; ++i) {
+    const std::string h5 = out + "/scenes/scene_000" + std::to_string(i) + ".h5";
+    if (fs::exists(h5)) finished[i] = MtimeNs(h5);
+  }
+  ASSERT_GE(finished.size(), 1u);
+  ASSERT_LT(finished.size(), 4u);
+
+  const testing::RunResult r =
+      testing::RunTehl("sweep --resume -j 2 -q -o '" + out + "' '" + study + "'");
+  ASSERT_TRUE(r.exited) << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const testing::IndexTable t = ReadIndex(out + "/index.h5");
+  ASSERT_EQ(t.scene.size(), 4u);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(t.status[i], "ok") << i;
+    const bool was_done = finished.count(i) > 0;
+    EXPECT_EQ(t.computed[i], was_done ? 0.0 : 1.0) << "scene " << i;
+    if (was_done) EXPECT_EQ(MtimeNs(t.result[i]), finished[i]) << "scene " << i << " rerun";
+    if (i > 0) EXPECT_LT(t.h_min_min[i], t.h_min_min[i - 1]) << "load rises with the scene";
+  }
+}
+
+}  // namespace
+}  // namespace tehl
