@@ -1,0 +1,102 @@
+#include "drive/motor_schema.hpp"
+
+#include <algorithm>
+
+#include "tehl/units.hpp"
+
+namespace tehl::internal {
+namespace {
+
+bool Rejected(const Document& doc, const std::string& section) {
+  const std::string prefix = section + ".";
+  return std::any_of(doc.problems().begin(), doc.problems().end(), [&](const InputProblem& p) {
+    return p.key.rfind(prefix, 0) == 0 || p.key == "[" + section + "]";
+  });
+}
+
+}  // namespace
+
+std::vector<KeySpec> MotorKeys() {
+  return {
+      Required(Text("type", "", "DC motor type (seed 001 section 3)",
+                    {"separately_excited", "shunt", "permanent_magnet", "series"}),
+               "\"shunt\""),
+      Required(Positive("supply_voltage_v", "V", "", "terminal (supply) voltage E"), "220.0"),
+      Required(Positive("armature_resistance_ohm", "Ohm", "",
+                        "armature circuit resistance R_a (series: with the series field)"),
+               "0.5"),
+      Required(Positive("speed_constant", "V s/(A rad)", "",
+                        "K_w of E_b = K_w I_f w (shunt, separately excited), E_b = K_w I_a w "
+                        "(series); permanent magnet: E_b = K_w w [V s/rad]"),
+               "1.2"),
+      Real("torque_constant", "N m/A", "0.0",
+           "K_a of T = K_a I_a (series: T = K_a I_a^2 [N m/A^2]); 0 = lossless, from K_w",
+           0.0),
+      Positive("field_current_a", "A", "", "field current I_f (separately_excited only)"),
+      Positive("field_resistance_ohm", "Ohm", "",
+               "shunt field resistance R_f, I_f = E / R_f (shunt only)"),
+      Positive("rated_current_a", "A", "",
+               "rated armature current I_r: base speed and the constant-torque / "
+               "constant-power envelope"),
+      Positive("max_speed_rpm", "rpm", "", "end of field weakening (needs rated_current_a)"),
+      Positive("speed_command_rpm", "rpm", "",
+               "speed-controlled drive: the motor runs at this speed (armature voltage "
+               "below the base speed, field weakening above); absent = fixed supply"),
+  };
+}
+
+std::optional<DcMotorSpec> ReadMotorSection(Document& doc, const std::string& section) {
+  if (Rejected(doc, section)) return std::nullopt;
+  DcMotorSpec s;
+  s.type = DcMotorTypeFromString(doc.String(section, "type"))
+               .value_or(DcMotorType::kPermanentMagnet);
+  s.supply_voltage_v = doc.Real(section, "supply_voltage_v");
+  s.armature_resistance_ohm = doc.Real(section, "armature_resistance_ohm");
+  s.speed_constant = doc.Real(section, "speed_constant");
+  s.torque_constant = doc.Real(section, "torque_constant");
+  s.field_current_a = doc.Real(section, "field_current_a");
+  s.field_resistance_ohm = doc.Real(section, "field_resistance_ohm");
+  s.rated_current_a = doc.Real(section, "rated_current_a");
+  s.max_speed_rad_s = RpmToRadPerS(doc.Real(section, "max_speed_rpm"));
+  bool ok = true;
+  auto only = [&](const char* key, DcMotorType t) {
+    if (doc.Given(section, key) && s.type != t) {
+      doc.Problem(section, key, "only a " + ToString(t) + " motor has this key",
+                  "remove it, or type = \"" + ToString(t) + "\"");
+      ok = false;
+    }
+  };
+  only("field_current_a", DcMotorType::kSeparatelyExcited);
+  only("field_resistance_ohm", DcMotorType::kShunt);
+  if (doc.Given(section, "max_speed_rpm") && !doc.Given(section, "rated_current_a")) {
+    doc.Problem(section, "max_speed_rpm", "field weakening needs the rated current",
+                "rated_current_a with max_speed_rpm");
+    ok = false;
+  }
+  if (!ok) return std::nullopt;
+  try {
+    const DcMotor motor(s);
+    if (s.max_speed_rad_s > 0 && s.max_speed_rad_s < motor.BaseSpeed()) {
+      doc.Problem(section, "max_speed_rpm",
+                  "below the base speed " + FormatReal(RadPerSToRpm(motor.BaseSpeed())) + " rpm",
+                  "a speed >= the base speed [rpm]");
+      return std::nullopt;
+    }
+  } catch (const InputError& e) {
+    for (const auto& p : e.problems()) {
+      const std::string key = p.key == "max_speed_rad_s" ? "max_speed_rpm" : p.key;
+      doc.Problem(section, doc.Given(section, key) || p.key == "field_current_a" ||
+                                   p.key == "field_resistance_ohm" ? key : "type",
+                  p.rule, p.allowed);
+    }
+    return std::nullopt;
+  }
+  return s;
+}
+
+std::optional<double> MotorSpeedCommand(const Document& doc, const std::string& section) {
+  if (!doc.Given(section, "speed_command_rpm")) return std::nullopt;
+  return RpmToRadPerS(doc.Real(section, "speed_command_rpm"));
+}
+
+}  // namespace tehl::internal

@@ -1,0 +1,48 @@
+// Planet count rules of seed 001 section 2.3 (planet_design.hpp).
+#include "tehl/drive/planet_design.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "tehl/error.hpp"
+#include "tehl/units.hpp"
+
+namespace tehl {
+
+bool PlanetRules::Assembles(int n) const { return n > 0 && total_teeth % n == 0; }
+
+bool PlanetRules::Clears(int n) const { return n >= 1 && n <= max_by_clearance; }
+
+PlanetRules CheckPlanetRules(const PlanetarySet& set) {
+  ProblemList p;
+  const std::string zs = std::to_string(set.sun_teeth), zr = std::to_string(set.ring_teeth);
+  if (set.sun_teeth < 1) p.Add({"", 0, "sun_teeth", zs, "must be >= 1", "an integer >= 1"});
+  if (set.ring_teeth <= set.sun_teeth + 2)
+    p.Add({"", 0, "ring_teeth", zr, "leaves no room for a planet (z_ring <= z_sun + 2)",
+           "z_ring > z_sun + 2, coaxial planet (z_ring - z_sun)/2"});
+  if (set.planet_teeth && *set.planet_teeth < 1)
+    p.Add({"", 0, "planet_teeth", std::to_string(*set.planet_teeth), "must be >= 1",
+           "an integer >= 1"});
+  if (!(set.addendum_coefficient > 0 && set.addendum_coefficient < 2))
+    p.Add({"", 0, "addendum_coefficient", std::to_string(set.addendum_coefficient),
+           "out of range", "0 < h_a* < 2 (standard 1)"});
+  p.ThrowIfAny();
+
+  PlanetRules r;
+  r.total_teeth = set.sun_teeth + set.ring_teeth;
+  r.coaxial_planet_teeth = 0.5 * (set.ring_teeth - set.sun_teeth);
+  r.coaxial = !set.planet_teeth || 2 * *set.planet_teeth == set.ring_teeth - set.sun_teeth;
+  // (2.13) with the coaxial planet (Example 2.13 uses it for a non-standard planet).
+  const double zp = r.coaxial_planet_teeth;
+  const double x = (zp + 2 * set.addendum_coefficient) / (set.sun_teeth + zp);
+  r.clearance_limit = x >= 1 ? 2.0 : kPi / std::asin(x);
+  // Largest integer strictly below the limit: tips that just touch do not clear.
+  r.max_by_clearance = static_cast<int>(std::ceil(r.clearance_limit)) - 1;
+  if (r.max_by_clearance < 1) r.max_by_clearance = 1;
+  for (int n = 1; n <= r.max_by_clearance; ++n)
+    if (r.total_teeth % n == 0) r.equally_spaced.push_back(n);
+  r.max_planets = r.equally_spaced.empty() ? 1 : r.equally_spaced.back();
+  return r;
+}
+
+}  // namespace tehl

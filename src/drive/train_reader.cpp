@@ -1,0 +1,417 @@
+// Train files: a schema per file (the user's member names become sections), the cross-key
+// rules, then a trial solve whose problems are reported at the lines of the keys concerned.
+#include "drive/train_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <toml.hpp>
+
+#include "base/schema.hpp"
+#include "drive/motor_schema.hpp"
+#include "tehl/units.hpp"
+
+namespace tehl::internal {
+namespace {
+
+const char* const kGroups[] = {"gear", "carrier", "rack", "mesh"};
+
+std::vector<KeySpec> SpeedKeys(bool rack) {
+  if (rack)
+    return {Real("speed_m_s", "m/s", "", "driven speed of the rack (input)"),
+            Flag("held", "false", "the rack is held (speed 0)")};
+  return {Real("speed_rpm", "rpm", "", "driven speed (input), + counter-clockwise"),
+          Real("speed_rad_s", "rad/s", "", "driven speed (alternative to speed_rpm)"),
+          Flag("held", "false", "the member is held (speed 0)")};
+}
+
+SectionSpec GearSection(const std::string& name) {
+  SectionSpec s{"gear." + name, "a gear (spur, helical, bevel, ring, worm wheel or worm)", false,
+                {Required(Integer("teeth", "-", "", "number of teeth; a worm: thread starts", 1.0,
+                                  100000.0),
+                          "30"),
+                 Positive("module_m", "m", "", "module (needed by a rack's pinion)"),
+                 Text("worm_hand", "", "makes the gear a worm of this hand", {"right", "left"}),
+                 Text("shaft", "\"\"", "shaft name: members on one shaft turn together"),
+                 Text("carrier", "\"\"", "carrier (arm) its axis rides on; \"\" = the frame")}};
+  for (auto& k : SpeedKeys(false)) s.keys.push_back(k);
+  return s;
+}
+
+SectionSpec CarrierSection(const std::string& name) {
+  SectionSpec s{"carrier." + name, "a carrier (arm) of an epicyclic train", false,
+                {Text("shaft", "\"\"", "shaft name: members on one shaft turn together"),
+                 Integer("planets", "-", "", "equally spaced planets (design rules checked)", 1.0,
+                         1000.0),
+                 Real("addendum_coefficient", "-", "1.0",
+                      "planet addendum / module, for the tip clearance rule", 0.0, 2.0, false,
+                      false)}};
+  for (auto& k : SpeedKeys(false)) s.keys.push_back(k);
+  return s;
+}
+
+SectionSpec RackSection(const std::string& name) {
+  SectionSpec s{"rack." + name, "a rack meshing with a pinion", false,
+                {Positive("module_m", "m", "", "module of the rack (= its pinion's)")}};
+  for (auto& k : SpeedKeys(true)) s.keys.push_back(k);
+  return s;
+}
+
+SectionSpec MeshSection(const std::string& name) {
+  return {"mesh." + name, "a mesh between two members", false,
+          {Required(Text("a", "", "first gear (a worm; a rack's pinion)"), "\"A\""),
+           Required(Text("b", "", "second gear (a worm wheel; a rack)"), "\"B\""),
+           Text("kind", "\"external\"", "kind of mesh",
+                {"external", "internal", "bevel", "worm", "rack"}),
+           Text("bevel_sense", "\"opposite\"",
+                "bevel: \"opposite\" with both gears seen from their backs, \"same\" when one "
+                "is seen from its front",
+                {"opposite", "same"})}};
+}
+
+Schema BuildSchema(const std::map<std::string, std::vector<std::string>>& names) {
+  Schema s;
+  s.kind = "train";
+  s.sections.push_back(
+      {"train", "the train and which members the train value relates", false,
+       {Text("name", "\"\"", "title shown in the report"),
+        Text("input", "\"\"", "input member of the train value w_output / w_input"),
+        Text("output", "\"\"", "output member of the train value")}});
+  for (const char* g : kGroups) {
+    s.sections.push_back({g, std::string("the ") + g + "s, one [" + g + ".NAME] each", false, {}});
+    for (const auto& n : names.count(g) ? names.at(g) : std::vector<std::string>{}) {
+      const std::string group = g;
+      s.sections.push_back(group == "gear"      ? GearSection(n)
+                           : group == "carrier" ? CarrierSection(n)
+                           : group == "rack"    ? RackSection(n)
+                                                : MeshSection(n));
+    }
+  }
+  SectionSpec motor{"motor", "a DC motor driving the train's input member", false, MotorKeys()};
+  s.sections.push_back(motor);
+  s.sections.push_back(
+      {"load", "the load on a member driven by the motor: T = torque_nm + viscous_nm_s |w|",
+       false,
+       {Text("member", "\"\"", "loaded member; \"\" = the train's output"),
+        Real("torque_nm", "N m", "0.0", "constant load torque", 0.0),
+        Real("viscous_nm_s", "N m s/rad", "0.0", "viscous load coefficient", 0.0),
+        Real("efficiency", "-", "1.0", "efficiency of the train from motor to load", 0.0, 1.0,
+             false, true)}});
+  return s;
+}
+
+// The member names written in the file (a pre-scan; the Document does all the checking).
+std::map<std::string, std::vector<std::string>> ScanNames(const std::string& path) {
+  std::map<std::string, std::vector<std::string>> names;
+  try {
+    const toml::value root = toml::parse(path);
+    if (!root.is_table()) return names;
+    for (const char* g : kGroups) {
+      if (!root.contains(g) || !root.at(g).is_table()) continue;
+      std::vector<std::pair<int, std::string>> found;  // in file order
+      for (const auto& [k, v] : root.at(g).as_table())
+        if (v.is_table()) found.emplace_back(static_cast<int>(v.location().line()), k);
+      std::sort(found.begin(), found.end());
+      for (const auto& f : found) names[g].push_back(f.second);
+    }
+  } catch (const std::exception&) {
+    // Unreadable: the Document reports why.
+  }
+  return names;
+}
+
+class TrainReader {
+ public:
+  TrainReader(Document* doc, TrainFile* out) : doc_(*doc), out_(*out) {}
+
+  void Read(const std::map<std::string, std::vector<std::string>>& names) {
+    out_.name = doc_.String("train", "name");
+    std::map<std::string, std::string> seen;  // name -> section
+    for (const char* g : {"gear", "carrier", "rack"}) {
+      for (const auto& n : names.count(g) ? names.at(g) : std::vector<std::string>{}) {
+        const std::string sec = std::string(g) + "." + n;
+        if (const auto it = seen.find(n); it != seen.end()) {
+          doc_.Problem(sec, "", "the name '" + n + "' is also [" + it->second + "]",
+                       "one name per gear, carrier and rack");
+          continue;
+        }
+        seen[n] = sec;
+        out_.spec.members.push_back(Member(g, n, sec));
+      }
+    }
+    for (const auto& n : names.count("mesh") ? names.at("mesh") : std::vector<std::string>{})
+      Mesh("mesh." + n);
+    out_.spec.input = doc_.String("train", "input");
+    out_.spec.output = doc_.String("train", "output");
+    for (const char* k : {"input", "output"})
+      if (doc_.Given("train", k) && out_.spec.Index(doc_.String("train", k)) < 0)
+        doc_.Problem("train", k, "no member of this name", "the name of a gear, carrier or rack");
+    Motor();
+  }
+
+  // Problems of SolveGearTrain ("<section>.<field>") at the lines of the file.
+  void Report(const InputError& e) {
+    for (const InputProblem& p : e.problems()) {
+      const auto dot = p.key.rfind('.');
+      std::string sec = dot == std::string::npos ? "" : p.key.substr(0, dot);
+      std::string key = dot == std::string::npos ? p.key : p.key.substr(dot + 1);
+      if (key == "speed") {
+        key = "";
+        for (const char* k : {"speed_rpm", "speed_rad_s", "speed_m_s", "held"})
+          if (doc_.Given(sec, k)) key = k;
+      } else if (key == "name") {
+        key = "";
+      } else if (!doc_.Given(sec, key)) {
+        key = "";
+      }
+      doc_.Problem(sec, key, p.rule, p.allowed);
+    }
+  }
+
+  void Planets() {
+    for (const TrainMember& c : out_.spec.members) {
+      if (c.kind != MemberKind::kCarrier) continue;
+      const std::string sec = "carrier." + c.name;
+      std::optional<PlanetarySetOnCarrier> found = FindSet(c.name);
+      const bool declared = doc_.Given(sec, "planets");
+      if (!found) {
+        if (declared)
+          doc_.Problem(sec, "planets", "no simple planetary set (sun, planet, ring) on this "
+                       "carrier to check", "planets only for a carrier with a sun-planet "
+                       "external mesh and a planet-ring internal mesh");
+        continue;
+      }
+      found->set.addendum_coefficient = doc_.Real(sec, "addendum_coefficient");
+      try {
+        found->rules = CheckPlanetRules(found->set);
+      } catch (const InputError& e) {
+        for (const auto& p : e.problems())
+          doc_.Problem("gear." + (p.key == "sun_teeth" ? found->sun : found->ring), "teeth",
+                       p.rule, p.allowed);
+        continue;
+      }
+      if (declared) {
+        const int n = static_cast<int>(doc_.Int(sec, "planets"));
+        found->planets = n;
+        const PlanetRules& r = found->rules;
+        if (!r.Assembles(n))
+          doc_.Problem(sec, "planets",
+                       "cannot be equally spaced: (z_sun + z_ring)/N = " +
+                           std::to_string(r.total_teeth) + "/" + std::to_string(n) +
+                           " is not an integer (seed 001 eq. 2.12)",
+                       "a divisor of " + std::to_string(r.total_teeth));
+        if (!r.Clears(n))
+          doc_.Problem(sec, "planets",
+                       "adjacent planet tips would touch: N must be < " +
+                           FormatReal(r.clearance_limit) + " (seed 001 eq. 2.13)",
+                       "at most " + std::to_string(r.max_by_clearance) + " planets");
+      }
+      out_.planetary.push_back(*found);
+    }
+  }
+
+ private:
+  std::optional<double> Speed(const std::string& sec, bool rack) {
+    const std::vector<const char*> keys =
+        rack ? std::vector<const char*>{"speed_m_s"}
+             : std::vector<const char*>{"speed_rpm", "speed_rad_s"};
+    int given = doc_.Bool(sec, "held") ? 1 : 0;
+    for (const char* k : keys) given += doc_.Given(sec, k);
+    if (given > 1) {
+      doc_.Problem(sec, doc_.Bool(sec, "held") ? "held" : keys.back(),
+                   "a member is driven at one speed or held, not both",
+                   rack ? "one of speed_m_s, held = true"
+                        : "one of speed_rpm, speed_rad_s, held = true");
+      return std::nullopt;
+    }
+    if (doc_.Bool(sec, "held")) return 0.0;
+    if (rack) {
+      if (doc_.Given(sec, "speed_m_s")) return doc_.Real(sec, "speed_m_s");
+    } else {
+      if (doc_.Given(sec, "speed_rpm")) return RpmToRadPerS(doc_.Real(sec, "speed_rpm"));
+      if (doc_.Given(sec, "speed_rad_s")) return doc_.Real(sec, "speed_rad_s");
+    }
+    return std::nullopt;
+  }
+
+  TrainMember Member(const std::string& group, const std::string& name, const std::string& sec) {
+    TrainMember m;
+    m.name = name;
+    m.where = sec;
+    m.kind = group == "gear" ? MemberKind::kGear
+             : group == "carrier" ? MemberKind::kCarrier : MemberKind::kRack;
+    m.speed = Speed(sec, m.kind == MemberKind::kRack);
+    if (m.kind == MemberKind::kGear) {
+      m.teeth = static_cast<int>(doc_.Int(sec, "teeth"));
+      if (!doc_.Has(sec, "teeth")) m.teeth = 1;  // reported by the schema; keep solving quiet
+      const std::string hand = doc_.String(sec, "worm_hand");
+      m.worm_hand = hand == "right" ? WormHand::kRight
+                    : hand == "left" ? WormHand::kLeft : WormHand::kNone;
+      m.carrier = doc_.String(sec, "carrier");
+    }
+    if (m.kind != MemberKind::kCarrier) m.module_m = doc_.Real(sec, "module_m");
+    if (m.kind != MemberKind::kRack) m.shaft = doc_.String(sec, "shaft");
+    return m;
+  }
+
+  void Mesh(const std::string& sec) {
+    TrainMesh m;
+    m.where = sec;
+    m.a = doc_.String(sec, "a");
+    m.b = doc_.String(sec, "b");
+    m.kind = MeshKindFromString(doc_.String(sec, "kind")).value_or(MeshKind::kExternal);
+    m.bevel_same_sense = doc_.String(sec, "bevel_sense") == "same";
+    if (doc_.Given(sec, "bevel_sense") && m.kind != MeshKind::kBevel)
+      doc_.Problem(sec, "bevel_sense", "only a bevel mesh has a sense to choose",
+                   "kind = \"bevel\", or remove bevel_sense");
+    if (doc_.Has(sec, "a") && doc_.Has(sec, "b")) out_.spec.meshes.push_back(m);
+  }
+
+  void Motor() {
+    const bool motor = doc_.HasSection("motor");
+    if (doc_.HasSection("load") && !motor)
+      doc_.Problem("load", "", "a load needs a [motor] to drive it", "a [motor] section");
+    if (!motor) return;
+    out_.motor = ReadMotorSection(doc_, "motor");
+    out_.speed_command_rad_s = MotorSpeedCommand(doc_, "motor");
+    out_.load.torque_nm = doc_.Real("load", "torque_nm");
+    out_.load.viscous_nm_s = doc_.Real("load", "viscous_nm_s");
+    out_.load.efficiency = doc_.Real("load", "efficiency");
+    if (!doc_.Has("load", "efficiency")) out_.load.efficiency = 1.0;
+    out_.load_member = doc_.String("load", "member");
+    if (out_.load_member.empty()) out_.load_member = doc_.String("train", "output");
+    const std::string input = doc_.String("train", "input");
+    if (out_.spec.members.empty()) {
+      // A motor on its own: the load sits on the motor shaft.
+      if (!out_.load_member.empty())
+        doc_.Problem("load", "member", "a file without gears has no members",
+                     "member = \"\" (the load is on the motor shaft)");
+      return;
+    }
+    if (input.empty() || out_.spec.Index(input) < 0) {
+      doc_.Problem("train", "input", "the motor drives the train's input member, which is "
+                   "missing or unknown", "input = the name of the member the motor drives");
+      return;
+    }
+    if (out_.load_member.empty() || out_.spec.Index(out_.load_member) < 0)
+      doc_.Problem("load", "member", "the loaded member is missing or unknown",
+                   "member = a gear, carrier or rack of the train (or [train] output)");
+    for (const TrainMember& m : out_.spec.members) {
+      if (m.name == input && m.speed)
+        doc_.Problem(m.where, "speed_rpm", "the motor gives the speed of " + input + " (speed "
+                     "given twice)", "no speed on the member the motor drives");
+      else if (m.speed && *m.speed != 0.0)
+        doc_.Problem(m.where, doc_.Given(m.where, "speed_rad_s") ? "speed_rad_s" : "speed_rpm",
+                     "with a motor the only other inputs are held members",
+                     "held = true, or no speed");
+    }
+  }
+
+  std::optional<PlanetarySetOnCarrier> FindSet(const std::string& carrier) {
+    const GearTrainSpec& s = out_.spec;
+    for (const TrainMember& p : s.members) {
+      if (p.kind != MemberKind::kGear || p.carrier != carrier) continue;
+      std::string sun, ring;
+      for (const TrainMesh& m : s.meshes) {
+        if (m.a != p.name && m.b != p.name) continue;
+        const std::string other = m.a == p.name ? m.b : m.a;
+        const int o = s.Index(other);
+        if (o < 0 || s.members[o].kind != MemberKind::kGear || !s.members[o].carrier.empty())
+          continue;
+        if (m.kind == MeshKind::kExternal && sun.empty()) sun = other;
+        if (m.kind == MeshKind::kInternal && ring.empty() && s.members[o].teeth > p.teeth)
+          ring = other;
+      }
+      if (sun.empty() || ring.empty()) continue;
+      PlanetarySetOnCarrier f;
+      f.carrier = carrier;
+      f.sun = sun;
+      f.planet = p.name;
+      f.ring = ring;
+      f.set.sun_teeth = s.members[s.Index(sun)].teeth;
+      f.set.ring_teeth = s.members[s.Index(ring)].teeth;
+      f.set.planet_teeth = p.teeth;
+      return f;
+    }
+    return std::nullopt;
+  }
+
+  Document& doc_;
+  TrainFile& out_;
+};
+
+}  // namespace
+
+TrainFile ReadTrainFile(const std::string& path) {
+  const auto names = ScanNames(path);
+  const Schema schema = BuildSchema(names);
+  Document doc = Document::ReadFile(schema, path);
+  for (const auto& p : doc.problems())
+    if (p.key == "(syntax)" || p.key == "(file)") doc.ThrowIfProblems();
+  TrainFile file;
+  file.path = path;
+  TrainReader reader(&doc, &file);
+  reader.Read(names);
+  if (!file.spec.members.empty() && !file.motor && !doc.HasSection("motor") &&
+      doc.problems().empty()) {
+    try {
+      SolveGearTrain(file.spec);
+    } catch (const InputError& e) {
+      reader.Report(e);
+    }
+  } else if (file.motor && doc.problems().empty() && !file.spec.members.empty()) {
+    try {
+      SolveUnitInput(file.spec);
+    } catch (const InputError& e) {
+      reader.Report(e);
+    }
+  }
+  if (file.spec.members.empty() && !doc.HasSection("motor"))
+    doc.Problem("gear", "", "a train file needs gears (or a [motor] on its own)",
+                "[gear.NAME] sections with [mesh.NAME] sections between them");
+  if (doc.problems().empty()) reader.Planets();
+  doc.ThrowIfProblems();
+  return file;
+}
+
+TrainResult SolveTrainFile(const TrainFile& file) {
+  TrainResult r;
+  if (!file.motor) {
+    r.solution = SolveGearTrain(file.spec);
+    r.tables = TabulateEpicyclic(file.spec, r.solution);
+    return r;
+  }
+  const DcMotor motor(*file.motor);
+  MotorLoad load = file.load;
+  TrainSolution unit;
+  if (!file.spec.members.empty()) {
+    unit = SolveUnitInput(file.spec);
+    r.load_train_value = unit.speed[file.spec.Index(file.load_member)];
+  } else {
+    r.load_train_value = 1.0;
+  }
+  load.train_value = r.load_train_value;
+  double w = 0;
+  if (file.speed_command_rad_s) {
+    w = *file.speed_command_rad_s;
+    r.controlled = SolveControlledPoint(motor, load, w);
+  } else {
+    r.motor = SolveOperatingPoint(motor, load);
+    w = r.motor->motor_speed_rad_s;
+  }
+  if (!file.spec.members.empty()) {
+    GearTrainSpec scaled = file.spec;
+    for (TrainMember& m : scaled.members)
+      if (m.name == file.spec.input) m.speed = w;
+    if (w != 0) {
+      r.solution = SolveGearTrain(scaled);
+      r.tables = TabulateEpicyclic(scaled, r.solution);
+    } else {
+      r.solution = unit;
+      for (double& x : r.solution.speed) x = 0.0;
+    }
+  }
+  return r;
+}
+
+}  // namespace tehl::internal

@@ -1,0 +1,187 @@
+// Train files of cases/trains/ (docs/trains.md) read, solved and checked against the seed
+// answers; the `tehl train` command; file:line messages for bad files.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "drive/train_reader.hpp"
+#include "tehl/error.hpp"
+#include "tehl/units.hpp"
+#include "unit/cli/run_tehl.hpp"
+
+namespace tehl {
+namespace {
+
+std::string Case(const std::string& name) {
+  return std::string(TEHL_SOURCE_DIR) + "/cases/trains/" + name + ".toml";
+}
+
+struct Solved {
+  internal::TrainFile file;
+  internal::TrainResult result;
+  double Speed(const std::string& member) const {
+    return result.solution.speed.at(file.spec.Index(member));
+  }
+};
+
+Solved Solve(const std::string& name) {
+  Solved s{internal::ReadTrainFile(Case(name)), {}};
+  s.result = internal::SolveTrainFile(s.file);
+  return s;
+}
+
+TEST(TrainFile, Seed001Example21) {  // w_F = -240 rpm, w_A / w_F = -20/3
+  const Solved s = Solve("seed001_ex2_1_compound");
+  EXPECT_NEAR(RadPerSToRpm(s.Speed("F")), -240.0, 1e-9);
+  EXPECT_NEAR(1.0 / *s.result.solution.train_value, -20.0 / 3.0, 1e-12);
+}
+
+TEST(TrainFile, Seed001Example22) {  // w_E = (N_A / N_E) w_A = 24/40 * 100 rpm
+  EXPECT_NEAR(RadPerSToRpm(Solve("seed001_ex2_2_idlers").Speed("E")), 60.0, 1e-9);
+}
+
+TEST(TrainFile, Seed001Example23) {  // 0.03125, 7.5 rpm, rack 7.66 m/min
+  const Solved s = Solve("seed001_ex2_3_bevel_worm_rack");
+  EXPECT_NEAR(std::abs(*s.result.solution.train_value), 0.03125, 1e-12);
+  EXPECT_NEAR(std::abs(RadPerSToRpm(s.Speed("9"))), 7.5, 1e-9);
+  EXPECT_NEAR(std::abs(s.Speed("10")) * 60.0, 7.66, 0.005);
+}
+
+TEST(TrainFile, Seed001Example24) {  // rolls at about 39.07 and 56.03 rpm (document)
+  const Solved s = Solve("seed001_ex2_4_two_rolls");
+  // 1800 / (1.846 * 25) = 39.0 and 1800 / (1.607 * 20) = 56.0 with the rounded teeth.
+  EXPECT_NEAR(std::abs(RadPerSToRpm(s.Speed("9"))), 39.07, 0.1);
+  EXPECT_NEAR(std::abs(RadPerSToRpm(s.Speed("13"))), 56.03, 0.1);
+}
+
+TEST(TrainFile, Seed001Example26Seed002) {  // +30.95 rad/s, tabulation of Example 2.10
+  const Solved s = Solve("seed001_ex2_6_seed002_planetary");
+  EXPECT_NEAR(s.Speed("2"), 30.95, 0.005);
+  ASSERT_EQ(s.result.tables.size(), 1u);
+  const TabulationTable& t = s.result.tables[0];
+  EXPECT_EQ(t.carrier, "6");
+  EXPECT_EQ(t.reference, "5");
+  ASSERT_EQ(t.rows.size(), 4u);
+  for (size_t k = 0; k < t.columns.size(); ++k) {
+    // Row 2: everything +150 with the arm; row 3: gear 5 turned -100 (Example 2.10);
+    // row 4 (sum) equals the solved speeds.
+    EXPECT_DOUBLE_EQ(*t.rows[1].values[k], 150.0);
+    EXPECT_NEAR(*t.rows[3].values[k], s.Speed(t.columns[k]), 1e-9) << t.columns[k];
+  }
+  const auto col = [&](const std::string& m) {
+    return std::find(t.columns.begin(), t.columns.end(), m) - t.columns.begin();
+  };
+  EXPECT_NEAR(*t.rows[2].values[col("5")], -100.0, 1e-9);
+  // Example 2.10 row 3: gear 2 -100 (N5 N3)/(N4 N2), gears 3 and 4 +100 N5/N4.
+  EXPECT_NEAR(*t.rows[2].values[col("2")], -100.0 * 25.0 / 21.0, 1e-9);
+  EXPECT_NEAR(*t.rows[2].values[col("3")], 100.0 * 20.0 / 28.0, 1e-9);
+  EXPECT_NEAR(*t.rows[0].values[col("2")], 25.0 / 21.0, 1e-12);  // Willis value
+}
+
+TEST(TrainFile, Seed001Example27) {  // arm +10.86, w5 = +52.14 rad/s
+  const Solved s = Solve("seed001_ex2_7_two_subtrains");
+  EXPECT_NEAR(s.Speed("6"), 10.86, 0.005);
+  EXPECT_NEAR(s.Speed("5"), 52.14, 0.005);
+}
+
+TEST(TrainFile, Seed001Example28) {  // -8.33 rad/s from the printed teeth
+  EXPECT_NEAR(Solve("seed001_ex2_8_bevel_differential").Speed("7"), -8.33, 0.005);
+}
+
+TEST(TrainFile, Seed001Example29) {  // 150 rad/s; tabulation column 2 = 1 + N1/N2 = 3 turns
+  const Solved s = Solve("seed001_ex2_9_fixed_sun");
+  EXPECT_NEAR(s.Speed("2"), 150.0, 1e-9);
+  const TabulationTable& t = s.result.tables.at(0);
+  EXPECT_EQ(t.reference, "1");
+  // Row 1 with gear 1 +1 turn relative to the arm: gear 2 turns -N1/N2 = -2 (Fig. 2.8a
+  // step 3 with the opposite sign: the document turns gear 1 by -1).
+  const auto col = std::find(t.columns.begin(), t.columns.end(), "2") - t.columns.begin();
+  EXPECT_NEAR(*t.rows[0].values[col], -2.0, 1e-12);
+}
+
+TEST(TrainFile, PlanetaryReducerWithSevenPlanetsFitsAndReducesBy28) {
+  const Solved s = Solve("seed001_ex2_11_planetary_reducer");
+  EXPECT_NEAR(1.0 / *s.result.solution.train_value, 2.8, 1e-12);  // Table 1.1: 1 + 90/50
+  ASSERT_EQ(s.file.planetary.size(), 1u);
+  EXPECT_EQ(s.file.planetary[0].rules.max_planets, 7);
+}
+
+TEST(TrainFile, RevertedReducer) {
+  EXPECT_NEAR(*Solve("reverted").result.solution.train_value, (20.0 / 40) * (25.0 / 35), 1e-12);
+}
+
+// Hoist: i = (20/40)(25/35)(2/40) = 1/56; T_motor = 300/56/0.6 = 8.929 N m; shunt flux
+// K_w E / R_f = 0.5 * 2 = 1 V s/rad: I_a = 8.929 A, w = 220 - 0.5 I_a = 215.54 rad/s.
+TEST(TrainFile, MotorHoistOperatingPoint) {
+  const Solved s = Solve("motor_hoist");
+  ASSERT_TRUE(s.result.motor && s.result.motor->usable());
+  const double t = 300.0 / 56.0 / 0.6;
+  EXPECT_NEAR(s.result.load_train_value, 1.0 / 56.0, 1e-12);
+  EXPECT_NEAR(s.result.motor->motor_torque_nm, t, 1e-9);
+  EXPECT_NEAR(s.result.motor->motor_speed_rad_s, 220.0 - 0.5 * t, 1e-9);
+  EXPECT_NEAR(s.Speed("drum"), (220.0 - 0.5 * t) / 56.0, 1e-9);
+}
+
+TEST(TrainCommand, PrintsSpeedsTrainValueAndTabulation) {
+  const auto r = testing::RunTehl("train '" + Case("seed001_ex2_6_seed002_planetary") + "'");
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("30.9524"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Tabulation, carrier 6"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("whole train locked to 6"), std::string::npos) << r.out;
+}
+
+TEST(TrainCommand, EveryShippedTrainFileRuns) {
+  for (const char* name :
+       {"seed001_ex2_1_compound", "seed001_ex2_2_idlers", "seed001_ex2_3_bevel_worm_rack",
+        "seed001_ex2_4_two_rolls", "seed001_ex2_6_seed002_planetary",
+        "seed001_ex2_7_two_subtrains", "seed001_ex2_8_bevel_differential",
+        "seed001_ex2_9_fixed_sun", "seed001_ex2_11_planetary_reducer", "reverted",
+        "motor_hoist"}) {
+    const auto r = testing::RunTehl("train '" + Case(name) + "'");
+    ASSERT_TRUE(r.exited) << name;
+    EXPECT_EQ(r.exit_code, 0) << name << "\n" << r.err;
+  }
+}
+
+std::string Problems(const std::string& text) {
+  const std::string path = testing::UniqueTempPath("train.toml");
+  std::ofstream(path) << text;
+  try {
+    internal::ReadTrainFile(path);
+  } catch (const InputError& e) {
+    std::string m = e.what();
+    const auto at = m.find(path);
+    while (m.find(path) != std::string::npos) m.replace(m.find(path), path.size(), "F");
+    return at == std::string::npos ? "no file name: " + m : m;
+  }
+  return "";
+}
+
+TEST(TrainFile, UnderDeterminedTrainIsReportedAtAMemberLine) {
+  const std::string m = Problems(
+      "[gear.A]\nteeth = 20\n[gear.B]\nteeth = 40\n[mesh.AB]\na = \"A\"\nb = \"B\"\n");
+  EXPECT_NE(m.find("F:1: [gear.A]: under-determined"), std::string::npos) << m;
+}
+
+TEST(TrainFile, OverDeterminedInputIsReportedAtItsKeyLine) {
+  const std::string m = Problems(
+      "[gear.A]\nteeth = 20\nspeed_rpm = 100.0\n[gear.B]\nteeth = 40\nspeed_rpm = -50.0\n"
+      "[mesh.AB]\na = \"A\"\nb = \"B\"\n");
+  EXPECT_NE(m.find("F:6: gear.B.speed_rpm = -50.0: over-determined"), std::string::npos) << m;
+}
+
+TEST(TrainFile, DeclaredPlanetCountThatCannotBeEquallySpacedIsRejected) {
+  const std::string m = Problems(
+      "[gear.s]\nteeth = 50\nspeed_rpm = 100.0\n[gear.p]\nteeth = 20\ncarrier = \"c\"\n"
+      "[gear.r]\nteeth = 90\nheld = true\n[carrier.c]\nplanets = 3\n"
+      "[mesh.sp]\na = \"s\"\nb = \"p\"\n[mesh.pr]\na = \"p\"\nb = \"r\"\nkind = \"internal\"\n");
+  EXPECT_NE(m.find("F:11: carrier.c.planets = 3: cannot be equally spaced"), std::string::npos)
+      << m;
+}
+
+}  // namespace
+}  // namespace tehl
