@@ -4,4 +4,10 @@ list(APPEND TEHL_SOURCES
   src/drive/torsional_mesh.cpp
   src/drive/torsional_model.cpp
   src/drive/dynamic_response.cpp
+  src/drive/gear_train.cpp
+  src/drive/gear_train_tabulation.cpp
+  src/drive/planet_design.cpp
+  src/drive/dc_motor.cpp
+  src/drive/motor_schema.cpp
+  src/drive/train_reader.cpp
 )
