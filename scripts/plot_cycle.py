@@ -3,10 +3,14 @@
 
     plot_cycle.py RESULT.h5 [-o DIR]
 
-writes, like seed 004 Figs. 3-6 (isothermal quantities only):
+writes, like seed 004 Figs. 3-6:
   <name>_cycle.png     C_RT = R/R0, C_UT = um/u0, C_WT = w/w0 along the path (Fig. 3)
   <name>_profiles.png  film pressure and thickness over x at A, B, the pitch point, D, E (Fig. 4)
   <name>_path.png      h_min, h_c and p_max along the path (Fig. 6)
+  <name>_thermal.png   thermal runs: T_max, mid-film and surface temperatures and the friction
+                       coefficient along the path, with the slide-to-roll ratio (Figs. 5-6)
+  <name>_temperature.png  thermal runs: mid-film and surface temperatures over x at A, the
+                       pitch point and E
 Exit codes: 0 done, 2 the file is missing or not a mesh-cycle result.
 """
 import argparse
@@ -120,6 +124,51 @@ def main():
     written.append(os.path.join(out, f"{name}_path.png"))
     fig.savefig(written[-1], dpi=120)
     plt.close(fig)
+
+    # Figs. 5-6: temperature and friction along the path, with the slide-to-roll ratio.
+    if "T_max" in cyc:
+        fig, (at, af) = plt.subplots(2, 1, figsize=(7, 6.5), sharex=True)
+        at.plot(s, cyc["T_max"][:] - 273.15, label=r"$T_{max}$ (film)")
+        at.plot(s, cyc["T_mid"][:] - 273.15, ls="--", label=r"mid-film $T_{max}$")
+        at.plot(s, cyc["T1_max"][:] - 273.15, label="pinion surface")
+        at.plot(s, cyc["T2_max"][:] - 273.15, label="wheel surface")
+        at.set_ylabel("temperature [C]")
+        af.plot(s, cyc["mu"][:], color="C3", label=r"friction coefficient $\mu$")
+        af.set_ylabel(r"$\mu$ [-]")
+        srr = af.twinx()
+        srr.plot(s, cyc["SRR"][:], color="0.4", lw=0.9, ls=":", label="SRR")
+        srr.set_ylabel("slide-to-roll ratio [-]")
+        af.set_xlabel("s, distance from A along the line of action [mm]")
+        for axis in (at, af):
+            mark_points(axis, cyc, mm)
+            axis.grid(alpha=0.3)
+            axis.legend(fontsize=8, loc="upper center")
+        srr.legend(fontsize=8, loc="upper right")
+        at.set_title(f"{name}: temperature and friction along the path", fontsize=10)
+        fig.tight_layout()
+        written.append(os.path.join(out, f"{name}_thermal.png"))
+        fig.savefig(written[-1], dpi=120)
+        plt.close(fig)
+    if "T_mid" in prof:
+        x = prof["x"][:] * mm
+        fig, ax = plt.subplots(figsize=(7, 4.2))
+        for label, target, color in [("A", 0.0, "C0"), ("pitch", cyc.attrs["s_C"], "C1"),
+                                     ("E", cyc.attrs["length"], "C2")]:
+            k = min(nearest(s, target * mm), prof["T_mid"].shape[0] - 1)
+            ax.plot(x, prof["T_mid"][k, :] - 273.15, color=color, label=f"{label}: mid-film")
+            ax.plot(x, prof["T1"][k, :] - 273.15, color=color, ls="--", lw=0.9,
+                    label=f"{label}: pinion surface")
+            ax.plot(x, prof["T2"][k, :] - 273.15, color=color, ls=":", lw=0.9,
+                    label=f"{label}: wheel surface")
+        ax.set_xlabel("x [mm]")
+        ax.set_ylabel("temperature [C]")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7, ncol=3)
+        ax.set_title(f"{name}: temperature across the contact", fontsize=10)
+        fig.tight_layout()
+        written.append(os.path.join(out, f"{name}_temperature.png"))
+        fig.savefig(written[-1], dpi=120)
+        plt.close(fig)
 
     for w in written:
         print(f"wrote {w}")
