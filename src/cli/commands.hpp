@@ -20,6 +20,7 @@ Command AddGearCommand(CLI::App& app);       // tehl gear CASE [--csv F] [--prof
 Command AddRunCommand(CLI::App& app);        // tehl run CASE
 Command AddPlotCommand(CLI::App& app);       // tehl plot RESULT.h5 [-o DIR]
 Command AddTrainCommand(CLI::App& app);      // tehl train FILE [--csv F]
+Command AddDynamicsCommand(CLI::App& app);   // tehl dynamics CASE [--speeds A:B:H] [-o DIR]
 Command AddSweepCommand(CLI::App& app);      // tehl sweep STUDY [-j N] [--resume] [--dry-run]
 
 // Exit codes.

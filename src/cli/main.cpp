@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
       AddPlotCommand(app),
       AddSweepCommand(app),
       AddTrainCommand(app),
+      AddDynamicsCommand(app),
   };
   try {
     app.parse(argc, argv);

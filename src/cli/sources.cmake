@@ -9,4 +9,5 @@ list(APPEND TEHL_CLI_SOURCES
   src/cli/sweep_command.cpp
   src/cli/sweep_mpi.cpp
   src/cli/train_command.cpp
+  src/cli/dynamics_command.cpp
 )

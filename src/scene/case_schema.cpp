@@ -134,6 +134,33 @@ SectionSpec OutputSection() {
   }};
 }
 
+SectionSpec DynamicsSection() {
+  return {"dynamics", "torsional dynamics of a gear pair (tehl dynamics; [effects] dynamic_load)",
+          false, {
+    Real("damping_ratio", "-", "0.05",
+         "mesh damping ratio zeta, c = 2 zeta sqrt(k_mean m_e) (seed 000: 0.03 to 0.17)", 0.0, 1.0,
+         true, false),
+    Real("backlash_m", "m", "",
+         "backlash along the line of action; absent = from the centre distance", 0.0),
+    Text("friction", "\"buckingham\"", "tooth friction law (buckingham: seed 000 eq. 4.10)",
+         {"none", "constant", "buckingham"}),
+    Real("friction_coefficient", "-", "0.05", "friction coefficient of friction = \"constant\"",
+         0.0, 1.0, true, false),
+    Positive("pinion_inertia_kg_m2", "kg m^2", "",
+             "pinion polar moment of inertia; absent = solid disc of the pitch diameter"),
+    Positive("wheel_inertia_kg_m2", "kg m^2", "",
+             "wheel polar moment of inertia; absent = solid disc of the pitch diameter"),
+    Real("relative_tolerance", "-", "1e-8", "relative error tolerance of the integrator", 0.0,
+         1e-3, false, true),
+    Real("periodic_tolerance", "-", "1e-6",
+         "periodic when the state repeats after a mesh period to this (relative)", 0.0, 1.0,
+         false, false),
+    Integer("max_periods", "-", "5000", "mesh periods integrated at most", 2.0, 1e7),
+    Integer("output_samples", "-", "400", "samples of the periodic response per mesh period", 8.0,
+            1e6),
+  }};
+}
+
 Schema BuildCaseSchema() {
   Schema s;
   s.kind = "case";
@@ -150,6 +177,7 @@ Schema BuildCaseSchema() {
       EffectsSection(),
       NumericsSection(),
       OutputSection(),
+      DynamicsSection(),
   };
   return s;
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "scene/dynamic_load.hpp"
 #include "tehl/error.hpp"
 #include "tehl/gear/path_of_contact.hpp"
 #include "tehl/gear/tooth_blank.hpp"
@@ -148,6 +149,14 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
   } catch (const InputError& e) {
     AddProblems(doc, e);
   }
+  if (doc.Bool("effects", "dynamic_load")) {
+    c.dynamic_load = MakeDynamicLoad(doc, c);
+    if (c.dynamic_load && !c.dynamic_load->response().periodic)
+      c.warnings.push_back({"effects", "dynamic_load",
+                            "torsional response " + c.dynamic_load->response().message +
+                                "; its last period is used",
+                            "more [dynamics] max_periods or damping_ratio", true});
+  }
   return c;
 }
 
@@ -156,7 +165,12 @@ std::vector<MeshCycleRow> GearCaseCycle(const GearCase& c, int points) {
   MeshCycleOptions o;
   o.points = points;
   o.load_sharing = c.load_sharing;
-  return MeshCycle(path, NominalToothLoad(*c.pair, c.operating), o, c.pair_stiffness);
+  std::vector<MeshCycleRow> rows =
+      MeshCycle(path, NominalToothLoad(*c.pair, c.operating), o, c.pair_stiffness);
+  if (c.dynamic_load)
+    for (MeshCycleRow& r : rows)
+      r.load_n_per_m *= c.dynamic_load->LoadFactorAt(r.contact.s_m, r.contact.s_m > 0);
+  return rows;
 }
 
 }  // namespace tehl::internal

@@ -21,6 +21,8 @@
 
 namespace tehl::internal {
 
+class DynamicLoad;  // scene/dynamic_load.hpp
+
 struct GearCase {
   GearPairSpec spec;
   std::optional<GearPair> pair;  // empty when the spec is unusable
@@ -33,6 +35,9 @@ struct GearCase {
   PairStiffnessFn pair_stiffness;
   std::shared_ptr<const PairStiffnessModel> model;  // owner behind pair_stiffness
   std::vector<GeometryProblem> warnings;            // geometry warnings, for the report
+  // [effects] dynamic_load: the periodic torsional response at the case's speed; the cycle's
+  // w(s) is the static w(s) times its LoadFactorAt(s). Null when the effect is off.
+  std::shared_ptr<const DynamicLoad> dynamic_load;
 
   double ReducedModulusPa() const;  // E' of the two gear materials [Pa]
 };

@@ -1,0 +1,227 @@
+// tehl dynamics CASE [--speeds FROM:TO:STEP] [-o DIR] [--threads N] [--no-plot]
+// Torsional dynamics of the gear pair of a case (docs/dynamics.md): frequencies, the periodic
+// response at the case's speed (mesh force over a period, the tracked pair's dynamic load
+// along the path) and, with --speeds, the dynamic load factor against the pinion speed as a
+// CSV and a PNG (scripts/plot_dynamics.py).
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "io/csv_table.hpp"
+#include "io/script_path.hpp"
+#include "scene/case_reader.hpp"
+#include "scene/dynamic_load.hpp"
+#include "scene/gear_case.hpp"
+#include "tehl/error.hpp"
+#include "tehl/units.hpp"
+
+namespace tehl::cli {
+namespace {
+namespace fs = std::filesystem;
+
+// "from:to:step" in rpm -> the speeds; throws InputError naming --speeds.
+std::vector<double> ParseSpeeds(const std::string& text) {
+  double a = 0, b = 0, h = 0;
+  char c1 = 0, c2 = 0, extra = 0;
+  std::istringstream in(text);
+  const bool parsed = static_cast<bool>(in >> a >> c1 >> b >> c2 >> h) && c1 == ':' && c2 == ':' &&
+                      !(in >> extra);
+  const double count = parsed && h > 0 ? std::floor((b - a) / h + 1e-9) + 1 : 0;
+  if (!parsed || !(a > 0) || !(b >= a) || !(h > 0) || count > 100000)
+    throw InputError(InputProblem{"", 0, "--speeds", text,
+                                  "must be FROM:TO:STEP in rpm with 0 < FROM <= TO, STEP > 0 and "
+                                  "at most 100000 speeds",
+                                  "e.g. 500:20000:100"});
+  std::vector<double> v;
+  for (int i = 0; i < static_cast<int>(count); ++i) v.push_back(a + i * h);
+  return v;
+}
+
+int RunPlot(const std::string& csv, const std::string& png, const std::string& title) {
+  const std::string script = internal::FindScript("plot_dynamics.py");
+  if (script.empty()) {
+    std::fprintf(stderr, "tehl dynamics: scripts/plot_dynamics.py not found (set TEHL_SCRIPT_DIR)\n");
+    return kExitInternal;
+  }
+  std::fflush(stdout);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execl("/usr/bin/python3", "python3", script.c_str(), csv.c_str(), "-o", png.c_str(),
+          "--labels", title.c_str(), static_cast<char*>(nullptr));
+    std::perror("tehl dynamics: cannot start /usr/bin/python3");
+    _exit(127);
+  }
+  int status = 0;
+  if (pid < 0 || waitpid(pid, &status, 0) < 0) return kExitInternal;
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return kExitOk;
+  std::fprintf(stderr, "tehl dynamics: the plot script failed\n");
+  return kExitInternal;
+}
+
+void Report(std::ostream& o, const internal::GearCase& c, const internal::DynamicsCase& d,
+            const TorsionalModel& m, const DynamicResponse& r) {
+  const TorsionalMesh& mesh = m.mesh();
+  const TorsionalParameters& p = d.params;
+  char buf[2048];
+  const double nr = 60.0 * m.natural_frequency_hz() / mesh.pinion_teeth();
+  std::snprintf(buf, sizeof buf,
+                "Torsional model (seed 000 eqs. 4.1-4.2, SI):\n"
+                "  J1 = %.6g kg m^2 (%s), J2 = %.6g kg m^2 (%s)\n"
+                "  r_b1 = %.4f mm, r_b2 = %.4f mm, equivalent mass m_e = %.6g kg\n"
+                "  mesh stiffness (%s): mean %.4g, min %.4g, max %.4g N/m\n"
+                "  damping ratio %.4g -> c = %.6g N s/m; backlash %.4g um (%s); friction %s\n"
+                "  static mesh force F_s = T1 / r_b1 = %.4f N\n"
+                "  natural frequency f_n = %.2f Hz; resonance where f_mesh = f_n at %.1f rpm "
+                "(f_n/2: %.1f rpm, f_n/3: %.1f rpm)\n",
+                p.pinion_inertia_kg_m2, d.inertia_from_blanks[0] ? "solid disc" : "given",
+                p.wheel_inertia_kg_m2, d.inertia_from_blanks[1] ? "solid disc" : "given",
+                mesh.pinion_base_radius_m() * 1e3, mesh.wheel_base_radius_m() * 1e3,
+                m.equivalent_mass_kg(), c.mesh_stiffness.c_str(), mesh.mean_stiffness_n_per_m(),
+                mesh.min_stiffness_n_per_m(), mesh.max_stiffness_n_per_m(), p.damping_ratio,
+                m.damping_n_s_per_m(), p.backlash_m * 1e6,
+                d.backlash_from_geometry ? "from the centre distance" : "given",
+                (ToString(p.friction) + (p.friction == FrictionLaw::kConstant
+                                             ? " mu = " + std::to_string(p.friction_coefficient)
+                                             : std::string()))
+                    .c_str(),
+                m.static_force_n(), m.natural_frequency_hz(), nr, nr / 2, nr / 3);
+  o << buf;
+  std::snprintf(buf, sizeof buf,
+                "At the case's speed %.2f rpm: mesh frequency f_mesh = %.2f Hz (f_mesh/f_n = "
+                "%.4f)\n"
+                "  %s; integrator: %ld steps (%ld rejected), %ld contact events\n"
+                "  dynamic load factor (peak F / F_s) = %.4f; min F = %.4f N; separated %.1f %% "
+                "and back flank %.1f %% of the period\n",
+                RadPerSToRpm(p.pinion_speed_rad_s), r.mesh_frequency_hz,
+                r.mesh_frequency_hz / r.natural_frequency_hz, r.message.c_str(),
+                r.integrator.accepted_steps, r.integrator.rejected_steps,
+                r.integrator.state_events, r.dynamic_load_factor, r.min_force_n,
+                100 * r.separated_fraction, 100 * r.back_flank_fraction);
+  o << buf;
+}
+
+}  // namespace
+
+Command AddDynamicsCommand(CLI::App& app) {
+  struct Args {
+    std::string case_file, speeds, output_dir;
+    int threads = 1;
+    bool no_plot = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* sub = app.add_subcommand(
+      "dynamics",
+      "Torsional dynamics of the gear pair of a case: natural and mesh frequencies, dynamic "
+      "mesh force and tooth load, dynamic load factor against speed");
+  sub->add_option("CASE", args->case_file, "Case file with [gear] and [operating]")->required();
+  sub->add_option("--speeds", args->speeds,
+                  "Pinion speed sweep FROM:TO:STEP [rpm], e.g. 500:20000:100: writes "
+                  "NAME_dynamics_sweep.csv and NAME_dynamics.png");
+  sub->add_option("-o,--output-dir", args->output_dir,
+                  "Folder for the files (default: [output] directory of the case)");
+  sub->add_option("--threads", args->threads, "Threads for the sweep")->check(CLI::Range(1, 256));
+  sub->add_flag("--no-plot", args->no_plot, "Write the CSV files only");
+  return {sub, [args]() {
+            std::vector<double> speeds;
+            if (!args->speeds.empty()) speeds = ParseSpeeds(args->speeds);
+            internal::Document doc = internal::ReadCaseDocument(args->case_file);
+            std::optional<internal::GearCase> c = internal::ReadGearCase(doc);
+            doc.ThrowIfProblems();
+            if (!c || !c->pair || !c->pair_stiffness) {
+              doc.Problem("gear", "", "the gear pair could not be built", "a valid gear pair");
+              doc.ThrowIfProblems();
+            }
+            const internal::DynamicsCase d = internal::ReadDynamicsCase(doc, *c);
+            doc.ThrowIfProblems();
+            const std::unique_ptr<TorsionalMesh> mesh = internal::MakeTorsionalMesh(*c);
+            TorsionalModel model(*mesh, d.params);
+            const DynamicResponse r = SolvePeriodicResponse(model, d.options);
+
+            const fs::path dir = args->output_dir.empty()
+                                     ? fs::path(doc.String("output", "directory"))
+                                     : fs::path(args->output_dir);
+            std::string name = doc.String("output", "name");
+            if (name.empty()) name = fs::path(args->case_file).stem().string();
+            fs::create_directories(dir);
+            std::ostringstream o;
+            o << "tehl dynamics: " << args->case_file << "\n";
+            Report(o, *c, d, model, r);
+            if (!r.integrator.usable() || r.steps.empty()) {
+              std::cout << o.str();
+              std::fprintf(stderr, "tehl dynamics: the integration failed: %s\n", r.message.c_str());
+              return kExitNotConverged;
+            }
+            std::vector<internal::CsvColumn> period(7);
+            const char* ph[] = {"phase_m", "t_s", "x_m", "v_m_s", "force_n", "k_mesh_n_per_m",
+                                "state"};
+            for (int i = 0; i < 7; ++i) period[i].header = ph[i];
+            for (const DynamicSample& s : r.samples) {
+              const double v[] = {s.phase_m, s.time_s, s.x_m, s.v_m_s, s.force_n,
+                                  s.stiffness_n_per_m, static_cast<double>(s.state)};
+              for (int i = 0; i < 7; ++i) period[i].values.push_back(v[i]);
+            }
+            const std::string period_csv = (dir / (name + "_dynamics_period.csv")).string();
+            internal::WriteCsvTable(period_csv, period);
+            std::vector<internal::CsvColumn> path(4);
+            const char* pa[] = {"s_m", "share", "w_static_n_per_m", "w_dynamic_n_per_m"};
+            for (int i = 0; i < 4; ++i) path[i].header = pa[i];
+            for (const PairLoadPoint& q : TrackedPairLoad(r, c->spec.face_width_m, 201)) {
+              const double v[] = {q.s_m, q.share, q.static_n_per_m, q.dynamic_n_per_m};
+              for (int i = 0; i < 4; ++i) path[i].values.push_back(v[i]);
+            }
+            const std::string path_csv = (dir / (name + "_dynamics_path.csv")).string();
+            internal::WriteCsvTable(path_csv, path);
+            o << "wrote " << period_csv << "\nwrote " << path_csv << "\n";
+            std::cout << o.str() << std::flush;
+            if (speeds.empty()) return kExitOk;
+
+            const std::vector<SweepPoint> sweep =
+                SweepSpeeds(*mesh, d.params, speeds, d.options, args->threads);
+            std::vector<internal::CsvColumn> t(11);
+            const char* th[] = {"pinion_speed_rpm",  "mesh_frequency_hz",   "dynamic_load_factor",
+                                "pair_load_factor",  "min_force_n",         "separated_fraction",
+                                "back_flank_fraction", "periodic",          "periods",
+                                "natural_frequency_hz", "resonance_rpm"};
+            for (int i = 0; i < 11; ++i) t[i].header = th[i];
+            int not_periodic = 0;
+            for (const SweepPoint& s : sweep) {
+              const double v[] = {s.pinion_speed_rpm,
+                                  s.mesh_frequency_hz,
+                                  s.dynamic_load_factor,
+                                  s.pair_load_factor,
+                                  s.min_force_n,
+                                  s.separated_fraction,
+                                  s.back_flank_fraction,
+                                  s.periodic ? 1.0 : 0.0,
+                                  static_cast<double>(s.periods),
+                                  r.natural_frequency_hz,
+                                  60.0 * r.natural_frequency_hz / mesh->pinion_teeth()};
+              for (int i = 0; i < 11; ++i) t[i].values.push_back(v[i]);
+              not_periodic += !s.periodic;
+            }
+            const std::string sweep_csv = (dir / (name + "_dynamics_sweep.csv")).string();
+            internal::WriteCsvTable(sweep_csv, t);
+            size_t peak = 0;
+            for (size_t i = 1; i < sweep.size(); ++i)
+              if (sweep[i].dynamic_load_factor > sweep[peak].dynamic_load_factor) peak = i;
+            std::printf("sweep: %zu speeds, largest dynamic load factor %.4f at %.1f rpm; %d not "
+                        "periodic in one mesh period\nwrote %s\n",
+                        sweep.size(), sweep[peak].dynamic_load_factor,
+                        sweep[peak].pinion_speed_rpm, not_periodic, sweep_csv.c_str());
+            if (args->no_plot) return kExitOk;
+            const std::string png = (dir / (name + "_dynamics.png")).string();
+            const int rc = RunPlot(sweep_csv, png, name);
+            if (rc == kExitOk) std::printf("wrote %s\n", png.c_str());
+            return rc;
+          }};
+}
+
+}  // namespace tehl::cli

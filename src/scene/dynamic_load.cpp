@@ -1,0 +1,102 @@
+#include "scene/dynamic_load.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "tehl/error.hpp"
+#include "tehl/gear/path_of_contact.hpp"
+
+namespace tehl::internal {
+
+DynamicsCase ReadDynamicsCase(Document& doc, const GearCase& c) {
+  DynamicsCase d;
+  TorsionalParameters& p = d.params;
+  const GearPair& pair = *c.pair;
+  p.pinion_speed_rad_s = c.operating.pinion_speed_rad_s;
+  p.pinion_torque_nm = c.operating.pinion_torque_nm;
+  p.damping_ratio = doc.Real("dynamics", "damping_ratio");
+  p.friction = FrictionLawFromString(doc.String("dynamics", "friction")).value_or(FrictionLaw::kNone);
+  p.friction_coefficient = doc.Real("dynamics", "friction_coefficient");
+
+  const double b = pair.spec().face_width_m;
+  const char* keys[2] = {"pinion_inertia_kg_m2", "wheel_inertia_kg_m2"};
+  const GearGeometry* gears[2] = {&pair.pinion(), &pair.wheel()};
+  const GearMemberSpec* members[2] = {&pair.spec().pinion, &pair.spec().wheel};
+  double j[2];
+  for (int i = 0; i < 2; ++i) {
+    d.inertia_from_blanks[i] = !doc.Given("dynamics", keys[i]);
+    j[i] = d.inertia_from_blanks[i]
+               ? DiscInertia(members[i]->material.density_kg_m3, b, gears[i]->pitch_radius_m)
+               : doc.Real("dynamics", keys[i]);
+  }
+  p.pinion_inertia_kg_m2 = j[0];
+  p.wheel_inertia_kg_m2 = j[1];
+  if (pair.spec().internal && d.inertia_from_blanks[1])
+    doc.Problem("dynamics", "wheel_inertia_kg_m2",
+                "a ring gear is not a solid disc: its inertia must be given",
+                "the ring's polar moment of inertia [kg m^2]");
+
+  d.backlash_from_geometry = !doc.Given("dynamics", "backlash_m");
+  p.backlash_m = d.backlash_from_geometry
+                     ? std::max(0.0, pair.backlash_m()) *
+                           std::cos(pair.line(Flank::kDrive).working_pressure_angle_rad)
+                     : doc.Real("dynamics", "backlash_m");
+
+  DynamicResponseOptions& o = d.options;
+  o.relative_tolerance = doc.Real("dynamics", "relative_tolerance");
+  o.periodic_tolerance = doc.Real("dynamics", "periodic_tolerance");
+  o.max_periods = static_cast<int>(doc.Int("dynamics", "max_periods"));
+  o.output_samples = static_cast<int>(doc.Int("dynamics", "output_samples"));
+  if (doc.Given("dynamics", "friction_coefficient") && p.friction != FrictionLaw::kConstant)
+    doc.Problem("dynamics", "friction_coefficient",
+                "is used only with friction = \"constant\" (friction is \"" +
+                    ToString(p.friction) + "\")",
+                "friction = \"constant\", or remove friction_coefficient");
+  return d;
+}
+
+std::unique_ptr<TorsionalMesh> MakeTorsionalMesh(const GearCase& c) {
+  return std::make_unique<TorsionalMesh>(*c.pair, c.pair_stiffness);
+}
+
+DynamicLoad::DynamicLoad(const GearCase& c, const DynamicsCase& d)
+    : mesh_(MakeTorsionalMesh(c)), model_(std::make_unique<TorsionalModel>(*mesh_, d.params)) {
+  response_ = SolvePeriodicResponse(*model_, d.options);
+}
+
+double DynamicLoad::LoadFactorAt(double s, bool left) const {
+  const double pb = mesh_->base_pitch_m();
+  s = std::clamp(s, 0.0, mesh_->length_m());
+  double phase = s - std::floor(s / pb) * pb;
+  if (left && phase < 1e-9 * pb && s > 0) phase = pb;
+  return response_.ForceAt(phase, left) / response_.static_force_n;
+}
+
+std::shared_ptr<const DynamicLoad> MakeDynamicLoad(Document& doc, const GearCase& c) {
+  if (!c.pair || !c.pair_stiffness) return nullptr;
+  const DynamicsCase d = ReadDynamicsCase(doc, c);
+  if (!doc.problems().empty()) return nullptr;
+  auto load = std::make_shared<const DynamicLoad>(c, d);
+  const DynamicResponse& r = load->response();
+  if (!r.integrator.usable() || r.steps.empty()) {
+    doc.Problem("effects", "dynamic_load",
+                "the torsional dynamics at the case's speed failed: " + r.message,
+                "a tighter [dynamics] relative_tolerance, more damping, or dynamic_load = false");
+    return nullptr;
+  }
+  if (r.min_force_n <= 0 || r.separated_fraction > 0 || r.back_flank_fraction > 0) {
+    char rule[256];
+    std::snprintf(rule, sizeof rule,
+                  "at the case's speed the drive flanks unload (min mesh force %.3g N, separated "
+                  "%.1f %%, back flank %.1f %% of the mesh period): a film cannot carry zero load",
+                  r.min_force_n, 100 * r.separated_fraction, 100 * r.back_flank_fraction);
+    doc.Problem("effects", "dynamic_load", rule,
+                "a larger [dynamics] damping_ratio, another speed (tehl dynamics CASE --speeds "
+                "shows where), or dynamic_load = false");
+    return nullptr;
+  }
+  return load;
+}
+
+}  // namespace tehl::internal

@@ -1,0 +1,153 @@
+// The [dynamics] section and the dynamic_load effect of a gear case (src/scene/dynamic_load.*):
+// defaults from the blanks and the geometry, the cycle rows' dynamic w, and bad input.
+#include "scene/dynamic_load.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "scene/case_reader.hpp"
+#include "scene/gear_case.hpp"
+#include "tehl/error.hpp"
+#include "tehl/units.hpp"
+
+namespace tehl {
+namespace {
+
+std::string CaseText(const std::string& name) {
+  std::ifstream in(std::string(TEHL_SOURCE_DIR) + "/cases/" + name + ".toml");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Writes `text` (a case) beside the shipped cases' lubricants and reads it as a gear case.
+std::string WriteCase(const std::string& text, const std::string& name) {
+  const std::string path = ::testing::TempDir() + "/tehl_dyn_" + name + ".toml";
+  std::ofstream(path) << std::regex_replace(text, std::regex("name = \"sae40\""),
+                                            "name = \"" TEHL_SOURCE_DIR "/lubricants/sae40.toml\"");
+  return path;
+}
+
+std::string Set(std::string text, const std::string& key, const std::string& value) {
+  return std::regex_replace(text, std::regex("(^|\n)" + key + " = [^\n]*"),
+                            "$1" + key + " = " + value);
+}
+
+internal::GearCase Read(const std::string& path) {
+  internal::Document doc = internal::ReadCaseDocument(path);
+  std::optional<internal::GearCase> c = internal::ReadGearCase(doc);
+  doc.ThrowIfProblems();
+  return *c;
+}
+
+TEST(DynamicsCase, InertiasOfSolidDiscsAndBacklashFromTheGeometry) {
+  // Seed 004 pair, rho = 7890 kg/m^3, b = 25 mm, pitch radii 35 and 105 mm:
+  // J = pi rho b r^4 / 2 = 4.64953e-4 and 3.76612e-2 kg m^2 (by hand). The standard centre
+  // distance is the zero-backlash distance: backlash 0 when not given.
+  std::string text = CaseText("seed004_sae40_dynamic");
+  text = std::regex_replace(text, std::regex("\nbacklash_m = [^\n]*"), "");
+  internal::Document doc = internal::ReadCaseDocument(WriteCase(text, "blanks"));
+  std::optional<internal::GearCase> c = internal::ReadGearCase(doc);
+  ASSERT_TRUE(c && c->pair);
+  const internal::DynamicsCase d = internal::ReadDynamicsCase(doc, *c);
+  EXPECT_TRUE(doc.problems().empty());
+  EXPECT_NEAR(d.params.pinion_inertia_kg_m2, 4.64953e-4, 1e-9);
+  EXPECT_NEAR(d.params.wheel_inertia_kg_m2, 3.76612e-2, 1e-7);
+  EXPECT_TRUE(d.backlash_from_geometry);
+  EXPECT_NEAR(d.params.backlash_m, 0.0, 1e-12);
+  EXPECT_EQ(d.params.friction, FrictionLaw::kBuckingham);
+  EXPECT_EQ(d.params.damping_ratio, 0.05);
+}
+
+TEST(DynamicsCase, BacklashOfAWiderCentreDistanceIsAlongTheLineOfAction) {
+  // a = 140.1 mm instead of 140: j_bn = j_t cos(alpha_wt), j_t of the gear pair.
+  std::string text = CaseText("seed004_sae40_dynamic");
+  text = std::regex_replace(text, std::regex("\nbacklash_m = [^\n]*"), "");
+  text = std::regex_replace(text, std::regex("\\[gear\\]\n"), "[gear]\ncenter_distance_m = 0.1401\n");
+  internal::Document doc = internal::ReadCaseDocument(WriteCase(text, "wide"));
+  std::optional<internal::GearCase> c = internal::ReadGearCase(doc);
+  ASSERT_TRUE(c && c->pair) << (doc.problems().empty() ? "" : doc.problems()[0].ToString());
+  const internal::DynamicsCase d = internal::ReadDynamicsCase(doc, *c);
+  const double jt = c->pair->backlash_m();
+  EXPECT_GT(jt, 0);
+  EXPECT_NEAR(d.params.backlash_m,
+              jt * std::cos(c->pair->line(Flank::kDrive).working_pressure_angle_rad), 1e-15);
+}
+
+TEST(DynamicLoadEffect, CycleRowsCarryTheDynamicLoadAtTheCaseSpeed) {
+  // Same case with and without the effect: every row's w is the static w times F/F_s of the
+  // periodic response at that s, and at 1000 rpm (near f_n/8) w differs by more than 20 %
+  // somewhere.
+  const std::string text = CaseText("seed004_sae40_dynamic");
+  const internal::GearCase dyn = Read(WriteCase(text, "on"));
+  const internal::GearCase stat = Read(WriteCase(Set(text, "dynamic_load", "false"), "off"));
+  ASSERT_TRUE(dyn.dynamic_load);
+  EXPECT_FALSE(stat.dynamic_load);
+  const auto rd = internal::GearCaseCycle(dyn, 201);
+  const auto rs = internal::GearCaseCycle(stat, 201);
+  ASSERT_EQ(rd.size(), rs.size());
+  double largest = 0;
+  for (size_t i = 0; i < rd.size(); ++i) {
+    const double s = rd[i].contact.s_m;
+    EXPECT_NEAR(rd[i].load_n_per_m,
+                rs[i].load_n_per_m * dyn.dynamic_load->LoadFactorAt(s, s > 0), 1e-9 * rs[i].load_n_per_m);
+    EXPECT_GT(rd[i].load_n_per_m, 0.0);
+    largest = std::max(largest, std::abs(rd[i].load_n_per_m / rs[i].load_n_per_m - 1));
+  }
+  EXPECT_GT(largest, 0.2);
+}
+
+TEST(DynamicLoadEffect, AtVeryLowSpeedTheCycleLoadIsTheStaticLoad) {
+  // 1 rpm: quasi-static; away from the 1 % of the period after each stiffness jump the
+  // dynamic w equals the static w to 1 % (friction off: it shifts the static balance).
+  std::string text = Set(CaseText("seed004_sae40_dynamic"), "pinion_speed_rpm", "1.0");
+  text = Set(text, "friction", "\"none\"");
+  const internal::GearCase c = Read(WriteCase(text, "slow"));
+  ASSERT_TRUE(c.dynamic_load);
+  const TorsionalMesh& mesh = c.dynamic_load->mesh();
+  int compared = 0;
+  for (int i = 0; i <= 400; ++i) {
+    const double s = mesh.length_m() * i / 400;
+    const double phase = std::fmod(s, mesh.base_pitch_m());
+    const MeshSegment& seg = mesh.segments()[mesh.SegmentAt(phase)];
+    if (phase - seg.begin_m < 0.01 * mesh.base_pitch_m()) continue;
+    EXPECT_NEAR(c.dynamic_load->LoadFactorAt(s, false), 1.0, 0.01) << "s = " << s;
+    ++compared;
+  }
+  EXPECT_GT(compared, 300);
+}
+
+void ExpectProblem(const std::string& text, const std::string& key, const std::string& name) {
+  const std::string path = WriteCase(text, name);
+  try {
+    Read(path);
+    ADD_FAILURE() << "no problem reported for " << key;
+  } catch (const InputError& e) {
+    bool found = false;
+    for (const InputProblem& p : e.problems())
+      found = found || (p.key == key && p.file == path && (p.line > 0 || key == "effects.dynamic_load"));
+    EXPECT_TRUE(found) << e.what();
+  }
+}
+
+TEST(DynamicsCase, RejectsBadValuesAtTheirLine) {
+  const std::string text = CaseText("seed004_sae40_dynamic");
+  ExpectProblem(Set(text, "damping_ratio", "1.5"), "dynamics.damping_ratio", "zeta");
+  ExpectProblem(Set(text, "friction", "\"coulomb\""), "dynamics.friction", "law");
+  ExpectProblem(Set(text, "backlash_m", "-1e-6"), "dynamics.backlash_m", "negative");
+  ExpectProblem(text + "friction_coefficient = 0.1\n", "dynamics.friction_coefficient", "mu");
+  ExpectProblem(text + "relative_tolerance = 0.01\n", "dynamics.relative_tolerance", "rtol");
+}
+
+TEST(DynamicLoadEffect, RejectsACaseWhoseTeethUnloadAtItsSpeed) {
+  // The resonance case with the default damping 0.05: the teeth separate (docs/dynamics.md).
+  ExpectProblem(Set(CaseText("seed004_sae40_dynamic_resonance"), "damping_ratio", "0.05"),
+                "effects.dynamic_load", "separates");
+}
+
+}  // namespace
+}  // namespace tehl
