@@ -100,7 +100,7 @@ class FilmField {
   Eigen::MatrixXd factor_;     // Eyring only
   std::unique_ptr<FilmEnergySolver> energy_;
   AndersonMixer outer_{5};  // the coupling iteration, reset by Begin
-  static constexpr int kInnerIterations = 60;
+  int inner_iterations_ = 1;  // energy solves per coupling iteration
 };
 
 // Friction of a film with eta(x_i, xi_j) given per node by `viscosity(i, eta)` over nz
