@@ -6,6 +6,7 @@ PKGS=(
   libeigen3-dev libsuitesparse-dev libfftw3-dev libhdf5-dev hdf5-tools
   libtoml11-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  clang libclang-rt-14-dev   # libFuzzer target and its sanitizers (tests/fuzz, scripts/ci_extra.sh)
   libopenmpi-dev openmpi-bin
   python3 python3-matplotlib python3-h5py python3-numpy
 )
