@@ -65,7 +65,7 @@ def main():
         for h in (1, 2, 3):
             if n[0] <= nr / h <= n[-1]:
                 ax.axvline(nr / h, color=color, lw=0.8, ls=":")
-                ax.text(nr / h, 1.0, f" f_n/{h}" if h > 1 else " f_n",
+                ax.text(nr / h, 1.0 + 0.04 * i, f" f_n/{h}" if h > 1 else " f_n",
                         transform=ax.get_xaxis_transform(), va="bottom", ha="center",
                         fontsize=8, color=color)
     ax.axhline(1.0, color="0.5", lw=0.6)

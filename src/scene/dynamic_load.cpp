@@ -39,7 +39,7 @@ DynamicsCase ReadDynamicsCase(Document& doc, const GearCase& c) {
 
   d.backlash_from_geometry = !doc.Given("dynamics", "backlash_m");
   p.backlash_m = d.backlash_from_geometry
-                     ? std::max(0.0, pair.backlash_m()) *
+                     ? (pair.backlash_m() > 1e-12 ? pair.backlash_m() : 0.0) *  // 1 pm: rounding
                            std::cos(pair.line(Flank::kDrive).working_pressure_angle_rad)
                      : doc.Real("dynamics", "backlash_m");
 
