@@ -17,9 +17,12 @@ namespace tehl {
 
 std::string ToString(FilmEnergySolver::Termination t) {
   switch (t) {
-    case FilmEnergySolver::Termination::kConverged: return "converged";
-    case FilmEnergySolver::Termination::kMaxIterations: return "max_iterations";
-    case FilmEnergySolver::Termination::kLinearSolverFailed: return "linear_solver_failed";
+    case FilmEnergySolver::Termination::kConverged:
+      return "converged";
+    case FilmEnergySolver::Termination::kMaxIterations:
+      return "max_iterations";
+    case FilmEnergySolver::Termination::kLinearSolverFailed:
+      return "linear_solver_failed";
   }
   return "unknown";
 }
@@ -48,10 +51,9 @@ double EnergyBalance::RelativeError() const {
 
 std::string FilmEnergySolver::Summary::BriefReport() const {
   std::ostringstream s;
-  s << "energy: " << ToString(termination) << " after " << iterations
-    << " iterations, max change " << max_change_k << " K, balance error "
-    << balance.RelativeError() << ", mass defect " << mass_defect << ", " << wall_time_s * 1e3
-    << " ms";
+  s << "energy: " << ToString(termination) << " after " << iterations << " iterations, max change "
+    << max_change_k << " K, balance error " << balance.RelativeError() << ", mass defect "
+    << mass_defect << ", " << wall_time_s * 1e3 << " ms";
   if (!usable()) s << " (" << message << ")";
   return s.str();
 }
@@ -67,7 +69,7 @@ std::vector<std::string> FilmEnergySolver::Options::Validate() const {
   rule(tolerance_k > 0, "tolerance_k", tolerance_k, "> 0 [K]");
   rule(max_iterations >= 1, "max_iterations", max_iterations, ">= 1");
   rule(relaxation > 0 && relaxation <= 1, "relaxation", relaxation, "in (0, 1]");
-  rule(refactor_ratio > 0 && refactor_ratio < 1, "refactor_ratio", refactor_ratio, "in (0, 1)");
+  rule(max_chord_steps >= 1, "max_chord_steps", max_chord_steps, ">= 1");
   return bad;
 }
 
@@ -129,7 +131,8 @@ void CheckFlow(const FilmFlowField& f, int n, int nz, bool moving, ProblemList* 
   auto finite = [&](const char* key, bool ok) {
     if (!ok) bad->Add({"", 0, key, "non-finite", "must be finite", "finite values"});
   };
-  if (size_rule("FilmFlowField::p_pa", f.p_pa.size(), 1, 1)) finite("FilmFlowField::p_pa", f.p_pa.allFinite());
+  if (size_rule("FilmFlowField::p_pa", f.p_pa.size(), 1, 1))
+    finite("FilmFlowField::p_pa", f.p_pa.allFinite());
   if (size_rule("FilmFlowField::h_m", f.h_m.size(), 1, 1)) {
     finite("FilmFlowField::h_m", f.h_m.allFinite());
     if (f.h_m.allFinite() && !(f.h_m.minCoeff() > 0))
@@ -163,6 +166,14 @@ double ChangeOfTemperatures(const Eigen::VectorXd& delta, int n, int nz) {
   for (int i = 0; i < n; ++i)
     m = std::max(m, delta.segment(i * (nz + 2), nz).cwiseAbs().maxCoeff());
   return m;
+}
+
+// Steps a linear contraction r needs from a step of size `change` until its remaining error
+// change r^m / (1 - r) is below tol.
+double ChordStepsToGo(double change, double r, double tol) {
+  if (!(r > 0)) return 0;
+  const double target = tol * (1 - r) / change;
+  return target >= 1 ? 0 : std::log(target) / std::log(r);
 }
 
 }  // namespace
@@ -225,18 +236,26 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
       }
     system.Assemble(in, t->t_k, rho, drho_dt, drho_dp, k);
     bool fresh = false, ok = true;
-    auto factorize = [&] {
+    auto factorize = [&](bool exact) {
       fresh = true;
       ++s.factorizations;
-      return system.Factorize();
+      return system.Factorize(exact);
     };
-    if (!system.PatternIsFactorized()) ok = factorize();
+    // First the cheap factorization without the reverse-flow couplings (exact when there is
+    // no reverse flow).
+    if (!system.HasFactorization()) ok = factorize(false);
     ok = ok && system.Correction(x, &delta);
     double change = ok ? ChangeOfTemperatures(delta, n, nz) : 0.0;
-    // A chord step that contracts poorly (or fails) is redone with a fresh factorization.
-    if (!fresh && (!ok || change > options_.refactor_ratio * last_change)) {
-      ok = factorize() && system.Correction(x, &delta);
+    // A step that fails, or whose contraction r = change / last_change would need more than
+    // max_chord_steps further steps to reach the tolerance, is redone with a fresh factorization
+    // of the full A, unless it already had one (then what remains is the Picard nonlinearity).
+    double r = change / last_change;
+    const bool poor =
+        !ok || r >= 1 || ChordStepsToGo(change, r, options_.tolerance_k) > options_.max_chord_steps;
+    if (poor && !(fresh && system.factorized_exact())) {
+      ok = factorize(true) && system.Correction(x, &delta);
       if (ok) change = ChangeOfTemperatures(delta, n, nz);
+      r = 0;
     }
     if (!ok) {
       s.termination = Termination::kLinearSolverFailed;
@@ -247,15 +266,19 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
     x += options_.relaxation * delta;
     system.Unpack(x, t0_, t);
     // Nothing depends on T when d rho/dT = 0: a step with a fresh factorization is the solution.
-    s.max_change_k = (linear && fresh && options_.relaxation == 1.0) ? 0.0 : change;
+    const bool exact_step = fresh && system.factorized_exact();
+    s.max_change_k = (linear && exact_step && options_.relaxation == 1.0) ? 0.0 : change;
     last_change = change;
-    s.balance = system.Balance(in, *t);
-    s.mass_defect = system.mass_defect();
-    if (s.max_change_k < options_.tolerance_k) {
+    // Remaining error of a contraction r after a step of size `change`: change r / (1 - r).
+    if (s.max_change_k * std::max(1.0, r / (1 - r)) < options_.tolerance_k) {
       s.termination = Termination::kConverged;
       break;
     }
     s.termination = Termination::kMaxIterations;
+  }
+  if (s.iterations > 0) {
+    s.balance = system.Balance(in, *t);
+    s.mass_defect = system.mass_defect();
   }
   if (s.termination == Termination::kMaxIterations) {
     std::ostringstream m;

@@ -53,8 +53,8 @@ void FilmEnergySystem::ComputeMassFluxes(const FilmEnergyInputs& in,
       mass_(i, j) = rho(i, j) * volume_(i, j);
       // d(rho h)/dt at fixed (x, xi); dT/dt lags one Picard iteration.
       const double dtdt = transient ? (t_iter(i, j) - (*in.previous_t_k)(i, j)) / in.dt_s : 0.0;
-      dmass_dt_(i, j) = dxc * dxi *
-                        (rho(i, j) * dhdt + f.h_m[i] * (drho_dp(i, j) * dpdt + drho_dt(i, j) * dtdt));
+      dmass_dt_(i, j) =
+          dxc * dxi * (rho(i, j) * dhdt + f.h_m[i] * (drho_dp(i, j) * dpdt + drho_dt(i, j) * dtdt));
     }
   }
   // x-face mass fluxes: face i - 1/2 is row i; the end faces carry the end node's flux.
@@ -168,33 +168,66 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
     for (int j = 0; j < nz_; ++j) rhs_[i * block_ + j] = b_(i, j);
 }
 
-bool FilmEnergySystem::PatternIsFactorized() const {
-  return klu_->numeric && col_ptr_ == analyzed_ptr_ && row_idx_ == analyzed_idx_;
-}
+bool FilmEnergySystem::HasFactorization() const { return klu_->numeric != nullptr; }
 
-bool FilmEnergySystem::Factorize() {
+bool FilmEnergySystem::Factorize(bool exact) {
+  // The matrix to factorize: A itself, or A without the moving-heat-source history inside a
+  // recirculation zone (columns joined by reverse-flow faces). KLU's block-triangular form
+  // turns each zone into one diagonal block; the history (a dense triangle) would fill it,
+  // while without it the block is banded and cheap. Outside the zones the history is lower
+  // block-triangular and costs only forward substitution, so it stays.
+  std::vector<int> zone(n_);
+  for (int i = 0; i < n_; ++i) {
+    bool reverse = false;
+    for (int j = 0; i > 0 && j < nz_; ++j) reverse = reverse || ae_(i - 1, j) != 0;
+    zone[i] = reverse ? zone[i - 1] : i;
+  }
+  fact_ptr_.assign(col_ptr_.size(), 0);
+  fact_idx_.clear();
+  fact_val_.clear();
+  fact_idx_.reserve(row_idx_.size());
+  fact_val_.reserve(row_idx_.size());
+  int dropped = 0;
+  for (int c = 0; c + 1 < static_cast<int>(col_ptr_.size()); ++c) {
+    fact_ptr_[c] = static_cast<int>(fact_idx_.size());
+    const int ci = c / block_;
+    const bool wall_column = c % block_ >= nz_;
+    for (int e = col_ptr_[c]; e < col_ptr_[c + 1]; ++e) {
+      const int ri = row_idx_[e] / block_;
+      if (!exact && wall_column && ri > ci && zone[ri] == zone[ci]) {
+        ++dropped;
+        continue;
+      }
+      fact_idx_.push_back(row_idx_[e]);
+      fact_val_.push_back(values_[e]);
+    }
+  }
+  fact_ptr_.back() = static_cast<int>(fact_idx_.size());
+  factorized_exact_ = dropped == 0;
+
   Klu& k = *klu_;
   const int size = n_ * block_;
-  if (!k.symbolic || col_ptr_ != analyzed_ptr_ || row_idx_ != analyzed_idx_) {
+  if (!k.symbolic || fact_ptr_ != analyzed_ptr_ || fact_idx_ != analyzed_idx_) {
     if (k.numeric) klu_free_numeric(&k.numeric, &k.common);
     if (k.symbolic) klu_free_symbolic(&k.symbolic, &k.common);
     analyzed_ptr_.clear();
-    k.symbolic = klu_analyze(size, col_ptr_.data(), row_idx_.data(), &k.common);
+    k.symbolic = klu_analyze(size, fact_ptr_.data(), fact_idx_.data(), &k.common);
     if (!k.symbolic) return false;
-    analyzed_ptr_ = col_ptr_;
-    analyzed_idx_ = row_idx_;
+    analyzed_ptr_ = fact_ptr_;
+    analyzed_idx_ = fact_idx_;
   }
   // Same pattern: refactor with the previous pivot order (no pivot search), unless its pivots
   // have become poor (reciprocal pivot growth); then a fresh factorization.
   if (k.numeric &&
-      klu_refactor(col_ptr_.data(), row_idx_.data(), values_.data(), k.symbolic, k.numeric,
+      klu_refactor(fact_ptr_.data(), fact_idx_.data(), fact_val_.data(), k.symbolic, k.numeric,
                    &k.common) &&
-      klu_rgrowth(col_ptr_.data(), row_idx_.data(), values_.data(), k.symbolic, k.numeric,
+      klu_rgrowth(fact_ptr_.data(), fact_idx_.data(), fact_val_.data(), k.symbolic, k.numeric,
                   &k.common) &&
       k.common.rgrowth > 1e-8)
     return true;
   if (k.numeric) klu_free_numeric(&k.numeric, &k.common);
-  k.numeric = klu_factor(col_ptr_.data(), row_idx_.data(), values_.data(), k.symbolic, &k.common);
+  k.numeric =
+      klu_factor(fact_ptr_.data(), fact_idx_.data(), fact_val_.data(), k.symbolic, &k.common);
   return k.numeric != nullptr;
 }
 
@@ -239,19 +272,41 @@ void FilmEnergySystem::Unpack(const Eigen::VectorXd& x, double t0_k, FilmTempera
 // column i, (i+1, j); column s1_i the wall-cell row (i, 0) and the surface-1 relations of
 // columns i' >= i (the moving-heat-source weights); s2_i likewise.
 void FilmEnergySystem::BuildMatrix(const FilmEnergyInputs& in) {
+  // The pattern depends on the upwind directions along x and on the walls; the surface
+  // weights (n^2 entries) only on the grid and the speeds. When both are as last time, only
+  // the film entries are rewritten in place.
+  std::vector<char> signature(static_cast<size_t>(n_) * nz_ * 2 + 1);
+  for (int i = 0; i < n_; ++i)
+    for (int j = 0; j < nz_; ++j) {
+      signature[2 * (i * nz_ + j)] = ae_(i, j) != 0;
+      signature[2 * (i * nz_ + j) + 1] = aw_(i, j) != 0;
+    }
+  signature.back() = in.fixed_walls;
+  const bool in_place = !values_.empty() && signature == signature_ &&
+                        in.factor1 == built_factor1_ && in.factor2 == built_factor2_;
   const int size = n_ * block_;
-  col_ptr_.assign(size + 1, 0);
-  row_idx_.clear();
-  values_.clear();
+  size_t cursor = 0;
+  if (!in_place) {
+    col_ptr_.assign(size + 1, 0);
+    row_idx_.clear();
+    values_.clear();
+    signature_ = signature;
+    built_factor1_ = in.factor1;
+    built_factor2_ = in.factor2;
+  }
   auto put = [&](int row, double v) {
-    row_idx_.push_back(row);
-    values_.push_back(v);
+    if (in_place) {
+      values_[cursor++] = v;
+    } else {
+      row_idx_.push_back(row);
+      values_.push_back(v);
+    }
   };
   int col = 0;
   for (int i = 0; i < n_; ++i) {
     const int base = i * block_;
     for (int j = 0; j < nz_; ++j, ++col) {
-      col_ptr_[col] = static_cast<int>(row_idx_.size());
+      if (!in_place) col_ptr_[col] = static_cast<int>(row_idx_.size());
       if (i > 0 && ae_(i - 1, j) != 0) put(base - block_ + j, ae_(i - 1, j));
       if (j > 0) put(base + j - 1, an_(i, j - 1));
       put(base + j, ap_(i, j));
@@ -261,19 +316,24 @@ void FilmEnergySystem::BuildMatrix(const FilmEnergyInputs& in) {
       if (i < n_ - 1 && aw_(i + 1, j) != 0) put(base + block_ + j, aw_(i + 1, j));
     }
     for (int s = 0; s < 2; ++s, ++col) {
-      col_ptr_[col] = static_cast<int>(row_idx_.size());
+      if (!in_place) col_ptr_[col] = static_cast<int>(row_idx_.size());
       const int wall_j = s == 0 ? 0 : nz_ - 1;
       put(base + wall_j, source_.CellLength(i) / dx_);  // the wall cell loses q dx_cell
       if (in.fixed_walls) continue;
+      if (in_place) {  // the surface weights are unchanged
+        cursor = col_ptr_[col + 1];
+        continue;
+      }
       const double factor = s == 0 ? in.factor1 : in.factor2;
       for (int ii = std::max(i, 1); ii < n_; ++ii)  // T_s(x_0) = T0: no weight at i' = 0
         put(ii * block_ + nz_ + s, -factor * source_.Weight(ii, i) / dx_);
     }
   }
-  col_ptr_[size] = static_cast<int>(row_idx_.size());
+  if (!in_place) col_ptr_[size] = static_cast<int>(row_idx_.size());
 }
 
-EnergyBalance FilmEnergySystem::Balance(const FilmEnergyInputs& in, const FilmTemperature& ft) const {
+EnergyBalance FilmEnergySystem::Balance(const FilmEnergyInputs& in,
+                                        const FilmTemperature& ft) const {
   const Eigen::MatrixXd& t = ft.t_k;
   const double cp = in.cp_j_kgk, t0 = in.t0_k;
   const bool transient = in.dt_s > 0;

@@ -3,10 +3,9 @@
 // FilmEnergySolver (include/tehl/ehl/film_energy.hpp; docs/theory.md gives the scheme).
 #pragma once
 
+#include <Eigen/Core>
 #include <memory>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "tehl/ehl/film_energy.hpp"
 
@@ -16,11 +15,11 @@ namespace tehl::internal {
 struct FilmEnergyInputs {
   const FilmFlowField* flow = nullptr;
   const Eigen::MatrixXd* previous_t_k = nullptr;  // n x nz, transient only
-  double dt_s = 0;                                 // <= 0: steady
-  double cp_j_kgk = 0;                             // lubricant heat capacity [J/(kg K)]
-  double t0_k = 0;                                 // inlet temperature [K]
-  bool fixed_walls = false;                        // T1 = T2 = T0
-  double factor1 = 0, factor2 = 0;                 // 1/sqrt(pi rho c k u) of solids 1, 2
+  double dt_s = 0;                                // <= 0: steady
+  double cp_j_kgk = 0;                            // lubricant heat capacity [J/(kg K)]
+  double t0_k = 0;                                // inlet temperature [K]
+  bool fixed_walls = false;                       // T1 = T2 = T0
+  double factor1 = 0, factor2 = 0;                // 1/sqrt(pi rho c k u) of solids 1, 2
 };
 
 // Unknown / equation layout: column block i = [theta_i0 .. theta_i(nz-1), s1_i, s2_i], with
@@ -39,12 +38,14 @@ class FilmEnergySystem {
                 const Eigen::MatrixXd& drho_dt,
                 const Eigen::MatrixXd& drho_dp,
                 const Eigen::VectorXd& k_w_mk);
-  // Factorizes the assembled A (KLU; the symbolic analysis is kept while the pattern stays
-  // the same, the numeric one refactored in the old pivot order). False if KLU fails.
-  bool Factorize();
-  // Whether a factorization exists for the assembled matrix's sparsity pattern (it may be of
-  // older values: the chord iteration uses it as an approximate inverse).
-  bool PatternIsFactorized() const;
+  // Factorizes the assembled A (exact), or A without the moving-heat-source history inside
+  // recirculation zones (cheap: banded diagonal blocks; an approximate inverse for the chord
+  // iteration). KLU; the symbolic analysis is kept while the pattern stays the same, the
+  // numeric one refactored in the old pivot order. False if KLU fails.
+  bool Factorize(bool exact);
+  bool HasFactorization() const;
+  // Whether the last factorization was of the full A (true also when A has no reverse flow).
+  bool factorized_exact() const { return factorized_exact_; }
   // delta = A_f^-1 (b - A x) with A_f the last factorized matrix. False if KLU fails or delta
   // is not finite.
   bool Correction(const Eigen::VectorXd& x, Eigen::VectorXd* delta) const;
@@ -75,6 +76,11 @@ class FilmEnergySystem {
   Eigen::MatrixXd ap_, as_, an_, aw_, ae_, b_, compression_, comp_explicit_t_;
   std::vector<int> col_ptr_, row_idx_;
   std::vector<double> values_, rhs_;
+  std::vector<char> signature_;  // upwind pattern and wall model of the built matrix
+  double built_factor1_ = 0, built_factor2_ = 0;
+  std::vector<int> fact_ptr_, fact_idx_;  // the factorized matrix (A or an approximation)
+  std::vector<double> fact_val_;
+  bool factorized_exact_ = false;
   std::vector<int> analyzed_ptr_, analyzed_idx_;
   std::unique_ptr<Klu> klu_;
   double mass_defect_ = 0;

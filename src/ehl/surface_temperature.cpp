@@ -25,8 +25,7 @@ MovingHeatSource::MovingHeatSource(const UniformGrid& grid)
   // Cell k >= 1 seen from node i = k + m: [x_i - (m + 1/2) dx, x_i - (m - 1/2) dx], clipped at
   // x_i for m = 0 (the integral stops at x_i).
   toeplitz_[0] = TwoRootDifference(0.5 * dx_, 0.0);
-  for (int m = 1; m < n_; ++m)
-    toeplitz_[m] = TwoRootDifference((m + 0.5) * dx_, (m - 0.5) * dx_);
+  for (int m = 1; m < n_; ++m) toeplitz_[m] = TwoRootDifference((m + 0.5) * dx_, (m - 0.5) * dx_);
   // The inlet half cell [x_0, x_0 + dx/2] seen from node i: nothing at i = 0.
   inlet_[0] = 0.0;
   for (int i = 1; i < n_; ++i) inlet_[i] = TwoRootDifference(i * dx_, (i - 0.5) * dx_);

@@ -24,17 +24,19 @@
 // central; heating and compression as cell sources; implicit Euler (BDF1) in time. The heat
 // flux into each solid is the residual of the surface half cell's balance, so the energy
 // balance closes to round-off plus the mass defect. The surface temperatures are unknowns of
-// the same sparse system (dense lower-triangular coupling by the moving-heat-source weights);
-// the system is solved by KLU, whose block-triangular ordering reduces the coupling to
-// forward substitution wherever no fluid flows against x. The temperature dependence of rho,
-// d rho/dT and of the compression term is iterated (Picard, optionally relaxed).
+// the same sparse system (dense lower-triangular coupling by the moving-heat-source weights),
+// solved by KLU, whose block-triangular ordering reduces that coupling to forward substitution
+// wherever no fluid flows against x. The temperature dependence of rho, d rho/dT and of the
+// compression term is iterated (Picard, optionally relaxed), each step a chord step with the
+// latest factorization; the first factorization leaves out the surface history inside
+// recirculation zones (which would fill their diagonal blocks), and the iteration falls back
+// to the exact factorization when it contracts too slowly (Options::max_chord_steps).
 #pragma once
 
+#include <Eigen/Core>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "tehl/ehl/grid.hpp"
 #include "tehl/ehl/surface_temperature.hpp"
@@ -61,14 +63,14 @@ struct FilmFlowField {
 
 // Temperatures and wall heat fluxes: the solution, the previous time level, the initial guess.
 struct FilmTemperature {
-  Eigen::MatrixXd t_k;      // n x nz film temperature; columns 0, nz-1 = the surfaces [K]
-  Eigen::VectorXd t1_k;     // surface temperature of solid 1 (= column 0) [K]
-  Eigen::VectorXd t2_k;     // surface temperature of solid 2 (= column nz-1) [K]
-  Eigen::VectorXd q1_w_m2;  // heat flux from the film into solid 1 [W/m^2]
-  Eigen::VectorXd q2_w_m2;  // heat flux from the film into solid 2 [W/m^2]
-  double MaxTemperature() const;       // max over the film [K]
-  double MeanTemperature(int i) const; // cross-film mean at node i (trapezoidal in xi) [K]
-  bool Matches(int n, int nz) const;   // every field has the sizes of an n x nz film
+  Eigen::MatrixXd t_k;            // n x nz film temperature; columns 0, nz-1 = the surfaces [K]
+  Eigen::VectorXd t1_k;           // surface temperature of solid 1 (= column 0) [K]
+  Eigen::VectorXd t2_k;           // surface temperature of solid 2 (= column nz-1) [K]
+  Eigen::VectorXd q1_w_m2;        // heat flux from the film into solid 1 [W/m^2]
+  Eigen::VectorXd q2_w_m2;        // heat flux from the film into solid 2 [W/m^2]
+  double MaxTemperature() const;  // max over the film [K]
+  double MeanTemperature(int i) const;  // cross-film mean at node i (trapezoidal in xi) [K]
+  bool Matches(int n, int nz) const;    // every field has the sizes of an n x nz film
 };
 
 // Energy budget of the film per unit face width [W/m]; generated = shear + compression.
@@ -86,32 +88,39 @@ struct EnergyBalance {
 class FilmEnergySolver {
  public:
   enum class Walls {
-    kMovingSolids,       // T1, T2 from the moving-heat-source integrals (eqs. 14-15)
-    kFixedTemperature,   // T1 = T2 = T0: solids of infinite thermal inertia (analytic limits)
+    kMovingSolids,      // T1, T2 from the moving-heat-source integrals (eqs. 14-15)
+    kFixedTemperature,  // T1 = T2 = T0: solids of infinite thermal inertia (analytic limits)
   };
   struct Options {
-    int film_nodes = 11;           // nz, cross-film nodes incl. both surfaces [-]; >= 3
-    double tolerance_k = 1e-3;     // stop when max |T_k - T_k-1| < this [K]; > 0
-    int max_iterations = 50;       // Picard iterations (T-dependence of rho) [-]; >= 1
-    double relaxation = 1.0;       // T_k = T_k-1 + relaxation (T_solved - T_k-1), (0, 1] [-]
+    int film_nodes = 11;        // nz, cross-film nodes incl. both surfaces [-]; >= 3
+    double tolerance_k = 1e-3;  // stop when the estimated remaining error max |T - T_k| < this:
+                                // the last change times max(1, r/(1-r)), r its contraction
+                                // [K]; > 0
+    int max_iterations = 50;    // steps (Picard on rho(T), chord) [-]; >= 1
+    double relaxation = 1.0;    // T_k = T_k-1 + relaxation (T_solved - T_k-1), (0, 1] [-]
     Walls walls = Walls::kMovingSolids;
-    // Start each Solve from the factorization of the previous one (chord iteration), as the
-    // coupling loop of a pressure solver re-solves a slowly changing flow; refactorize when a
-    // chord step shrinks the change by less than refactor_ratio. false = factorize every Solve.
+    // Each step is x += relaxation A_f^-1 (b(x) - A(x) x) with A_f a factorization that may be
+    // older than A(x) (a chord step) or, first, A without its reverse-flow couplings (block
+    // triangular: cheap; Gauss-Seidel on the recirculation). A step whose observed
+    // contraction would need more than max_chord_steps further steps to reach tolerance_k is
+    // redone with a fresh factorization of the full A (which costs about 25 steps at n = 513
+    // with reverse flow). reuse_factorization: start each Solve from the previous Solve's
+    // factorization, as the coupling loop of a pressure solver re-solves a slowly changing
+    // flow; false = a fresh factorization (without reverse flow) in every Solve.
     bool reuse_factorization = true;
-    double refactor_ratio = 0.25;  // in (0, 1) [-]
+    int max_chord_steps = 20;                   // >= 1 [-]
     std::vector<std::string> Validate() const;  // every violated rule; empty = valid
   };
   enum class Termination { kConverged, kMaxIterations, kLinearSolverFailed };
   struct Summary {
     Termination termination = Termination::kLinearSolverFailed;
     std::string message = "Solve() was not called.";
-    int iterations = 0;         // linear solves (Picard / chord steps) [-]
-    int factorizations = 0;     // KLU numeric factorizations among them [-]
-    double max_change_k = -1;   // max |T| change of the last iteration (0 for a linear problem) [K]
-    double mass_defect = 0;     // max over columns |column mass mismatch| / mass flow scale [-]
+    int iterations = 0;        // linear solves (Picard / chord steps) [-]
+    int factorizations = 0;    // KLU numeric factorizations among them [-]
+    double max_change_k = -1;  // max |T| change of the last iteration (0 for a linear problem) [K]
+    double mass_defect = 0;    // max over columns |column mass mismatch| / mass flow scale [-]
     EnergyBalance balance;
-    double wall_time_s = 0;     // [s]
+    double wall_time_s = 0;  // [s]
     bool usable() const { return termination == Termination::kConverged; }
     std::string BriefReport() const;
   };

@@ -21,9 +21,8 @@
 // grid, so it is computed once and F carries the solid and its speed.
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "tehl/ehl/grid.hpp"
 

@@ -23,11 +23,11 @@ inline Lubricant EnergyTestOil(double beta_per_k = 6.5e-4, double t0_k = 313.15)
   d.density_kg_m3 = 880.0;
   d.reference_temperature_k = t0_k;
   d.expansivity_per_k = beta_per_k;
-  return Lubricant(
-      "energy_test_oil", "test", t0_k, 2000.0, beta_per_k,
-      std::make_unique<ConstantViscosity>(ConstantViscosity::Parameters{0.1}),
-      std::make_unique<DowsonHigginsonDensity>(d),
-      std::make_unique<PressureDependentConductivity>(PressureDependentConductivity::Parameters{0.14}));
+  return Lubricant("energy_test_oil", "test", t0_k, 2000.0, beta_per_k,
+                   std::make_unique<ConstantViscosity>(ConstantViscosity::Parameters{0.1}),
+                   std::make_unique<DowsonHigginsonDensity>(d),
+                   std::make_unique<PressureDependentConductivity>(
+                       PressureDependentConductivity::Parameters{0.14}));
 }
 
 // Aluminium bronze UNS C61300 (VALIDATION.md section 5): rho 7890 kg/m^3, c 375 J/(kg K),
@@ -48,7 +48,7 @@ struct EhlLikeParameters {
   double central_film_m = 0.5e-6;  // h_c [m]
   double radius_m = 0.01;          // R of the parabolic part [m]
   double u1_m_s = 1.0, u2_m_s = 1.5;
-  double eta0_pa_s = 0.05;   // [Pa s]
+  double eta0_pa_s = 0.05;     // [Pa s]
   double alpha_per_pa = 1e-8;  // [1/Pa]
 };
 

@@ -50,8 +50,8 @@ TEST(MovingHeatSource, UniformBandFluxMatchesCarslawJaegerToRoundOff) {
       worst = std::max(worst, err);
       if (i == 4 + m) at_band_end = err;  // the last node inside the band
     }
-    std::printf("m = %3d cells on the band: max error %.2e, at the band's end %.2e (relative)\n",
-                m, worst, at_band_end);
+    std::printf("m = %3d cells on the band: max error %.2e, at the band's end %.2e (relative)\n", m,
+                worst, at_band_end);
     EXPECT_LT(worst, 1e-12) << m;
   }
 }
