@@ -28,9 +28,10 @@ namespace tehl {
 class Lubricant;
 class SurfaceShape;
 
-// kDense: a fresh dense LU per Newton iteration (the reference). kNewtonKrylov: GMRES with a
-// band-LU preconditioner. kReusedLu: GMRES preconditioned by the dense LU of an earlier
-// Jacobian, refactorized only when GMRES needs more than reused_lu_max_gmres iterations.
+// kDense: a fresh dense LU per Newton iteration (the reference). kNewtonKrylov: GMRES with the
+// sparse LU of an augmented film system as preconditioner. kReusedLu: GMRES preconditioned
+// by the dense LU of an earlier Jacobian, refactorized only when GMRES needs more than
+// reused_lu_max_gmres iterations.
 // kAuto: kReusedLu up to dense_max_nodes, kNewtonKrylov above.
 enum class LinearSolverKind { kAuto, kDense, kNewtonKrylov, kReusedLu };
 std::string ToString(LinearSolverKind k);
@@ -86,9 +87,9 @@ class LineContactSolver {
  public:
   struct Options {
     LinearSolverKind linear_solver = LinearSolverKind::kAuto;
-    int dense_max_nodes = 4097;       // kAuto uses dense LU up to this many nodes [-]
-                                      // (Newton-Krylov fails from 2049 nodes:
-                                      // docs/performance.md)
+    int dense_max_nodes = 1025;       // kAuto uses the reused dense LU up to this many
+                                      // nodes, Newton-Krylov above [-] (measured switch
+                                      // point: docs/performance.md)
     int upwind_order = 2;             // Couette-term upwinding: 1 or 2 [-]
     TimeScheme time_scheme = TimeScheme::kBdf2;
     double tolerance = 1e-8;          // stop when the scaled residual max-norm < this [-]
@@ -96,7 +97,8 @@ class LineContactSolver {
     int gmres_restart = 60;           // Krylov vectors before a restart [-]
     int gmres_max_iterations = 400;   // per Newton step [-]
     int reused_lu_max_gmres = 20;     // kReusedLu refactorizes beyond this [-]
-    int preconditioner_band = 24;     // half-band of the elastic matrix in the preconditioner [-]
+    int preconditioner_band = 8;      // Newton-Krylov: half-band of the second-differenced
+                                      // elastic kernel per preconditioner level [-]
     int max_continuation_stages = 12; // load / pressure-viscosity continuation stages [-]
     int coarse_grid_nodes = 129;      // grid sequencing halves the grid down to this [-]
     double min_step_fraction = 1.0 / 1024;  // smallest line-search step [-]
@@ -171,6 +173,18 @@ class LineContactSolver {
   // surfaces still move).
   void BeginTransient(const ContactConditions& c, const FilmState& initial);
   Summary Step(const ContactConditions& c_new, double dt_s, FilmState* state);
+
+  // The transient history (the stored levels of rho_e h, the last step and conditions), for
+  // checkpoints: a solver restored with RestoreTransient and the state of the same time level
+  // continues as the original would (to the solver tolerance: factorizations are rebuilt).
+  struct TransientHistory {
+    int levels = 0;                // stored levels (0: BeginTransient not called) [-]
+    Eigen::VectorXd q1, q2;        // rho_e h at t_{n-1}, t_{n-2} [kg/m^2]
+    double dt_prev_s = 0;          // t_{n-1} - t_{n-2} [s]
+    ContactConditions c_prev;      // conditions at t_{n-1}
+  };
+  TransientHistory SaveTransient() const;
+  void RestoreTransient(const TransientHistory& h);
 
   // Diagnostics: the scaled steady residual max-norm of a state under conditions c, and
   // the mass flow per unit width q = rho h um - rho h^3/(12 eta) dp/dx between nodes i and
