@@ -32,8 +32,8 @@ std::vector<double> ParseSpeeds(const std::string& text) {
   double a = 0, b = 0, h = 0;
   char c1 = 0, c2 = 0, extra = 0;
   std::istringstream in(text);
-  const bool parsed = static_cast<bool>(in >> a >> c1 >> b >> c2 >> h) && c1 == ':' && c2 == ':' &&
-                      !(in >> extra);
+  const bool parsed =
+      static_cast<bool>(in >> a >> c1 >> b >> c2 >> h) && c1 == ':' && c2 == ':' && !(in >> extra);
   const double count = parsed && h > 0 ? std::floor((b - a) / h + 1e-9) + 1 : 0;
   if (!parsed || !(a > 0) || !(b >= a) || !(h > 0) || count > 100000)
     throw InputError(InputProblem{"", 0, "--speeds", text,
@@ -48,14 +48,15 @@ std::vector<double> ParseSpeeds(const std::string& text) {
 int RunPlot(const std::string& csv, const std::string& png, const std::string& title) {
   const std::string script = internal::FindScript("plot_dynamics.py");
   if (script.empty()) {
-    std::fprintf(stderr, "tehl dynamics: scripts/plot_dynamics.py not found (set TEHL_SCRIPT_DIR)\n");
+    std::fprintf(stderr,
+                 "tehl dynamics: scripts/plot_dynamics.py not found (set TEHL_SCRIPT_DIR)\n");
     return kExitInternal;
   }
   std::fflush(stdout);
   const pid_t pid = fork();
   if (pid == 0) {
-    execl("/usr/bin/python3", "python3", script.c_str(), csv.c_str(), "-o", png.c_str(),
-          "--labels", title.c_str(), static_cast<char*>(nullptr));
+    execl("/usr/bin/python3", "python3", script.c_str(), csv.c_str(), "-o", png.c_str(), "--labels",
+          title.c_str(), static_cast<char*>(nullptr));
     std::perror("tehl dynamics: cannot start /usr/bin/python3");
     _exit(127);
   }
@@ -66,8 +67,11 @@ int RunPlot(const std::string& csv, const std::string& png, const std::string& t
   return kExitInternal;
 }
 
-void Report(std::ostream& o, const internal::GearCase& c, const internal::DynamicsCase& d,
-            const TorsionalModel& m, const DynamicResponse& r) {
+void Report(std::ostream& o,
+            const internal::GearCase& c,
+            const internal::DynamicsCase& d,
+            const TorsionalModel& m,
+            const DynamicResponse& r) {
   const TorsionalMesh& mesh = m.mesh();
   const TorsionalParameters& p = d.params;
   char buf[2048];
@@ -102,9 +106,9 @@ void Report(std::ostream& o, const internal::GearCase& c, const internal::Dynami
                 "and back flank %.1f %% of the period\n",
                 RadPerSToRpm(p.pinion_speed_rad_s), r.mesh_frequency_hz,
                 r.mesh_frequency_hz / r.natural_frequency_hz, r.message.c_str(),
-                r.integrator.accepted_steps, r.integrator.rejected_steps,
-                r.integrator.state_events, r.dynamic_load_factor, r.min_force_n,
-                100 * r.separated_fraction, 100 * r.back_flank_fraction);
+                r.integrator.accepted_steps, r.integrator.rejected_steps, r.integrator.state_events,
+                r.dynamic_load_factor, r.min_force_n, 100 * r.separated_fraction,
+                100 * r.back_flank_fraction);
   o << buf;
 }
 
@@ -129,99 +133,104 @@ Command AddDynamicsCommand(CLI::App& app) {
                   "Folder for the files (default: [output] directory of the case)");
   sub->add_option("--threads", args->threads, "Threads for the sweep")->check(CLI::Range(1, 256));
   sub->add_flag("--no-plot", args->no_plot, "Write the CSV files only");
-  return {sub, [args]() {
-            std::vector<double> speeds;
-            if (!args->speeds.empty()) speeds = ParseSpeeds(args->speeds);
-            internal::Document doc = internal::ReadCaseDocument(args->case_file);
-            std::optional<internal::GearCase> c = internal::ReadGearCase(doc);
-            doc.ThrowIfProblems();
-            if (!c || !c->pair || !c->pair_stiffness) {
-              doc.Problem("gear", "", "the gear pair could not be built", "a valid gear pair");
-              doc.ThrowIfProblems();
-            }
-            const internal::DynamicsCase d = internal::ReadDynamicsCase(doc, *c);
-            doc.ThrowIfProblems();
-            const std::unique_ptr<TorsionalMesh> mesh = internal::MakeTorsionalMesh(*c);
-            TorsionalModel model(*mesh, d.params);
-            const DynamicResponse r = SolvePeriodicResponse(model, d.options);
+  return {
+      sub, [args]() {
+        std::vector<double> speeds;
+        if (!args->speeds.empty()) speeds = ParseSpeeds(args->speeds);
+        internal::Document doc = internal::ReadCaseDocument(args->case_file);
+        std::optional<internal::GearCase> c = internal::ReadGearCase(doc);
+        doc.ThrowIfProblems();
+        if (!c || !c->pair || !c->pair_stiffness) {
+          doc.Problem("gear", "", "the gear pair could not be built", "a valid gear pair");
+          doc.ThrowIfProblems();
+        }
+        const internal::DynamicsCase d = internal::ReadDynamicsCase(doc, *c);
+        doc.ThrowIfProblems();
+        const std::unique_ptr<TorsionalMesh> mesh = internal::MakeTorsionalMesh(*c);
+        TorsionalModel model(*mesh, d.params);
+        const DynamicResponse r = SolvePeriodicResponse(model, d.options);
 
-            const fs::path dir = args->output_dir.empty()
-                                     ? fs::path(doc.String("output", "directory"))
-                                     : fs::path(args->output_dir);
-            std::string name = doc.String("output", "name");
-            if (name.empty()) name = fs::path(args->case_file).stem().string();
-            fs::create_directories(dir);
-            std::ostringstream o;
-            o << "tehl dynamics: " << args->case_file << "\n";
-            Report(o, *c, d, model, r);
-            if (!r.integrator.usable() || r.steps.empty()) {
-              std::cout << o.str();
-              std::fprintf(stderr, "tehl dynamics: the integration failed: %s\n", r.message.c_str());
-              return kExitNotConverged;
-            }
-            std::vector<internal::CsvColumn> period(7);
-            const char* ph[] = {"phase_m", "t_s", "x_m", "v_m_s", "force_n", "k_mesh_n_per_m",
-                                "state"};
-            for (int i = 0; i < 7; ++i) period[i].header = ph[i];
-            for (const DynamicSample& s : r.samples) {
-              const double v[] = {s.phase_m, s.time_s, s.x_m, s.v_m_s, s.force_n,
-                                  s.stiffness_n_per_m, static_cast<double>(s.state)};
-              for (int i = 0; i < 7; ++i) period[i].values.push_back(v[i]);
-            }
-            const std::string period_csv = (dir / (name + "_dynamics_period.csv")).string();
-            internal::WriteCsvTable(period_csv, period);
-            std::vector<internal::CsvColumn> path(4);
-            const char* pa[] = {"s_m", "share", "w_static_n_per_m", "w_dynamic_n_per_m"};
-            for (int i = 0; i < 4; ++i) path[i].header = pa[i];
-            for (const PairLoadPoint& q : TrackedPairLoad(r, c->spec.face_width_m, 201)) {
-              const double v[] = {q.s_m, q.share, q.static_n_per_m, q.dynamic_n_per_m};
-              for (int i = 0; i < 4; ++i) path[i].values.push_back(v[i]);
-            }
-            const std::string path_csv = (dir / (name + "_dynamics_path.csv")).string();
-            internal::WriteCsvTable(path_csv, path);
-            o << "wrote " << period_csv << "\nwrote " << path_csv << "\n";
-            std::cout << o.str() << std::flush;
-            if (speeds.empty()) return kExitOk;
+        const fs::path dir = args->output_dir.empty() ? fs::path(doc.String("output", "directory"))
+                                                      : fs::path(args->output_dir);
+        std::string name = doc.String("output", "name");
+        if (name.empty()) name = fs::path(args->case_file).stem().string();
+        fs::create_directories(dir);
+        std::ostringstream o;
+        o << "tehl dynamics: " << args->case_file << "\n";
+        Report(o, *c, d, model, r);
+        if (!r.integrator.usable() || r.steps.empty()) {
+          std::cout << o.str();
+          std::fprintf(stderr, "tehl dynamics: the integration failed: %s\n", r.message.c_str());
+          return kExitNotConverged;
+        }
+        std::vector<internal::CsvColumn> period(7);
+        const char* ph[] = {"phase_m", "t_s", "x_m", "v_m_s", "force_n", "k_mesh_n_per_m", "state"};
+        for (int i = 0; i < 7; ++i) period[i].header = ph[i];
+        for (const DynamicSample& s : r.samples) {
+          const double v[] = {s.phase_m,
+                              s.time_s,
+                              s.x_m,
+                              s.v_m_s,
+                              s.force_n,
+                              s.stiffness_n_per_m,
+                              static_cast<double>(s.state)};
+          for (int i = 0; i < 7; ++i) period[i].values.push_back(v[i]);
+        }
+        const std::string period_csv = (dir / (name + "_dynamics_period.csv")).string();
+        internal::WriteCsvTable(period_csv, period);
+        std::vector<internal::CsvColumn> path(4);
+        const char* pa[] = {"s_m", "share", "w_static_n_per_m", "w_dynamic_n_per_m"};
+        for (int i = 0; i < 4; ++i) path[i].header = pa[i];
+        for (const PairLoadPoint& q : TrackedPairLoad(r, c->spec.face_width_m, 201)) {
+          const double v[] = {q.s_m, q.share, q.static_n_per_m, q.dynamic_n_per_m};
+          for (int i = 0; i < 4; ++i) path[i].values.push_back(v[i]);
+        }
+        const std::string path_csv = (dir / (name + "_dynamics_path.csv")).string();
+        internal::WriteCsvTable(path_csv, path);
+        o << "wrote " << period_csv << "\nwrote " << path_csv << "\n";
+        std::cout << o.str() << std::flush;
+        if (speeds.empty()) return kExitOk;
 
-            const std::vector<SweepPoint> sweep =
-                SweepSpeeds(*mesh, d.params, speeds, d.options, args->threads);
-            std::vector<internal::CsvColumn> t(11);
-            const char* th[] = {"pinion_speed_rpm",  "mesh_frequency_hz",   "dynamic_load_factor",
-                                "pair_load_factor",  "min_force_n",         "separated_fraction",
-                                "back_flank_fraction", "periodic",          "periods",
-                                "natural_frequency_hz", "resonance_rpm"};
-            for (int i = 0; i < 11; ++i) t[i].header = th[i];
-            int not_periodic = 0;
-            for (const SweepPoint& s : sweep) {
-              const double v[] = {s.pinion_speed_rpm,
-                                  s.mesh_frequency_hz,
-                                  s.dynamic_load_factor,
-                                  s.pair_load_factor,
-                                  s.min_force_n,
-                                  s.separated_fraction,
-                                  s.back_flank_fraction,
-                                  s.periodic ? 1.0 : 0.0,
-                                  static_cast<double>(s.periods),
-                                  r.natural_frequency_hz,
-                                  60.0 * r.natural_frequency_hz / mesh->pinion_teeth()};
-              for (int i = 0; i < 11; ++i) t[i].values.push_back(v[i]);
-              not_periodic += !s.periodic;
-            }
-            const std::string sweep_csv = (dir / (name + "_dynamics_sweep.csv")).string();
-            internal::WriteCsvTable(sweep_csv, t);
-            size_t peak = 0;
-            for (size_t i = 1; i < sweep.size(); ++i)
-              if (sweep[i].dynamic_load_factor > sweep[peak].dynamic_load_factor) peak = i;
-            std::printf("sweep: %zu speeds, largest dynamic load factor %.4f at %.1f rpm; %d not "
-                        "periodic in one mesh period\nwrote %s\n",
-                        sweep.size(), sweep[peak].dynamic_load_factor,
-                        sweep[peak].pinion_speed_rpm, not_periodic, sweep_csv.c_str());
-            if (args->no_plot) return kExitOk;
-            const std::string png = (dir / (name + "_dynamics.png")).string();
-            const int rc = RunPlot(sweep_csv, png, name);
-            if (rc == kExitOk) std::printf("wrote %s\n", png.c_str());
-            return rc;
-          }};
+        const std::vector<SweepPoint> sweep =
+            SweepSpeeds(*mesh, d.params, speeds, d.options, args->threads);
+        std::vector<internal::CsvColumn> t(11);
+        const char* th[] = {"pinion_speed_rpm",     "mesh_frequency_hz", "dynamic_load_factor",
+                            "pair_load_factor",     "min_force_n",       "separated_fraction",
+                            "back_flank_fraction",  "periodic",          "periods",
+                            "natural_frequency_hz", "resonance_rpm"};
+        for (int i = 0; i < 11; ++i) t[i].header = th[i];
+        int not_periodic = 0;
+        for (const SweepPoint& s : sweep) {
+          const double v[] = {s.pinion_speed_rpm,
+                              s.mesh_frequency_hz,
+                              s.dynamic_load_factor,
+                              s.pair_load_factor,
+                              s.min_force_n,
+                              s.separated_fraction,
+                              s.back_flank_fraction,
+                              s.periodic ? 1.0 : 0.0,
+                              static_cast<double>(s.periods),
+                              r.natural_frequency_hz,
+                              60.0 * r.natural_frequency_hz / mesh->pinion_teeth()};
+          for (int i = 0; i < 11; ++i) t[i].values.push_back(v[i]);
+          not_periodic += !s.periodic;
+        }
+        const std::string sweep_csv = (dir / (name + "_dynamics_sweep.csv")).string();
+        internal::WriteCsvTable(sweep_csv, t);
+        size_t peak = 0;
+        for (size_t i = 1; i < sweep.size(); ++i)
+          if (sweep[i].dynamic_load_factor > sweep[peak].dynamic_load_factor) peak = i;
+        std::printf(
+            "sweep: %zu speeds, largest dynamic load factor %.4f at %.1f rpm; %d not "
+            "periodic in one mesh period\nwrote %s\n",
+            sweep.size(), sweep[peak].dynamic_load_factor, sweep[peak].pinion_speed_rpm,
+            not_periodic, sweep_csv.c_str());
+        if (args->no_plot) return kExitOk;
+        const std::string png = (dir / (name + "_dynamics.png")).string();
+        const int rc = RunPlot(sweep_csv, png, name);
+        if (rc == kExitOk) std::printf("wrote %s\n", png.c_str());
+        return rc;
+      }};
 }
 
 }  // namespace tehl::cli

@@ -126,10 +126,10 @@ DynamicResponse SolvePeriodicResponse(TorsionalModel& model, const DynamicRespon
     }
   }
   if (n == o.max_periods) n = o.max_periods - 1;
-  r.message = r.periodic ? "periodic after " + std::to_string(r.periods) + " mesh periods"
-                         : "not periodic in one mesh period after " +
-                               std::to_string(r.periods) + " periods (relative change " +
-                               std::to_string(r.periodicity_error) + ")";
+  r.message = r.periodic
+                  ? "periodic after " + std::to_string(r.periods) + " mesh periods"
+                  : "not periodic in one mesh period after " + std::to_string(r.periods) +
+                        " periods (relative change " + std::to_string(r.periodicity_error) + ")";
   r.steps = std::move(current);
   r.period_start_s = n * pb / cs;
 
@@ -156,16 +156,19 @@ DynamicResponse SolvePeriodicResponse(TorsionalModel& model, const DynamicRespon
   r.back_flank_fraction = back / r.mesh_period_s;
   r.dynamic_load_factor = r.peak_force_n / r.static_force_n;
   for (const auto& e : model.events())
-    if (e.from == ContactState::kDriveFlank) r.contact_loss_times_s.push_back(e.t_s - r.period_start_s);
+    if (e.from == ContactState::kDriveFlank)
+      r.contact_loss_times_s.push_back(e.t_s - r.period_start_s);
 
-  for (int k = 0; k < o.output_samples; ++k) r.samples.push_back(r.SampleAt(pb * k / o.output_samples, false));
+  for (int k = 0; k < o.output_samples; ++k)
+    r.samples.push_back(r.SampleAt(pb * k / o.output_samples, false));
   for (const MeshSegment& seg : mesh.segments()) {
     r.samples.push_back(r.SampleAt(seg.end_m, true));
     if (seg.end_m < pb) r.samples.push_back(r.SampleAt(seg.end_m, false));
   }
   r.samples.push_back(r.SampleAt(pb, true));
-  std::stable_sort(r.samples.begin(), r.samples.end(),
-                   [](const DynamicSample& a, const DynamicSample& b) { return a.phase_m < b.phase_m; });
+  std::stable_sort(
+      r.samples.begin(), r.samples.end(),
+      [](const DynamicSample& a, const DynamicSample& b) { return a.phase_m < b.phase_m; });
   return r;
 }
 

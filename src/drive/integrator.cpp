@@ -73,13 +73,20 @@ std::vector<std::string> IntegratorOptions::Validate() const {
 
 std::string ToString(IntegratorTermination t) {
   switch (t) {
-    case IntegratorTermination::kReachedEnd: return "reached_end";
-    case IntegratorTermination::kInvalidOptions: return "invalid_options";
-    case IntegratorTermination::kMaxSteps: return "max_steps";
-    case IntegratorTermination::kStepTooSmall: return "step_too_small";
-    case IntegratorTermination::kNonFinite: return "non_finite";
-    case IntegratorTermination::kEventChattering: return "event_chattering";
-    case IntegratorTermination::kStoppedByObserver: return "stopped_by_observer";
+    case IntegratorTermination::kReachedEnd:
+      return "reached_end";
+    case IntegratorTermination::kInvalidOptions:
+      return "invalid_options";
+    case IntegratorTermination::kMaxSteps:
+      return "max_steps";
+    case IntegratorTermination::kStepTooSmall:
+      return "step_too_small";
+    case IntegratorTermination::kNonFinite:
+      return "non_finite";
+    case IntegratorTermination::kEventChattering:
+      return "event_chattering";
+    case IntegratorTermination::kStoppedByObserver:
+      return "stopped_by_observer";
   }
   return "unknown";
 }
@@ -101,10 +108,9 @@ IntegratorSummary DormandPrince54::Integrate(HybridOdeSystem& sys,
   const IntegratorOptions& o = options_;
   const int n = sys.Dimension();
   std::vector<double>& y = *y_io;
-  if (const auto bad = o.Validate(); !bad.empty() || static_cast<int>(y.size()) != n ||
-                                     !(t1 > t0) ||
-                                     (!o.absolute_tolerance.empty() &&
-                                      static_cast<int>(o.absolute_tolerance.size()) != n)) {
+  if (const auto bad = o.Validate();
+      !bad.empty() || static_cast<int>(y.size()) != n || !(t1 > t0) ||
+      (!o.absolute_tolerance.empty() && static_cast<int>(o.absolute_tolerance.size()) != n)) {
     sum.termination = IntegratorTermination::kInvalidOptions;
     sum.message = bad.empty() ? "state size, tolerance size or interval is inconsistent" : bad[0];
     return sum;
@@ -244,8 +250,8 @@ IntegratorSummary DormandPrince54::Integrate(HybridOdeSystem& sys,
       r[n + i] = dy;
       r[2 * n + i] = bspl;
       r[3 * n + i] = dy - h * k7[i] - bspl;
-      r[4 * n + i] = h * (d1 * k1[i] + d3 * k3[i] + d4 * k4[i] + d5 * k5[i] + d6 * k6[i] +
-                          d7 * k7[i]);
+      r[4 * n + i] =
+          h * (d1 * k1[i] + d3 * k3[i] + d4 * k4[i] + d5 * k5[i] + d6 * k6[i] + d7 * k7[i]);
     }
     dense.t0_s = t;
     dense.h_s = h;

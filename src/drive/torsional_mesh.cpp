@@ -37,7 +37,8 @@ TorsionalMesh::TorsionalMesh(const GearPair& pair, const PairStiffnessFn& k, int
 }
 
 TorsionalMesh TorsionalMesh::Constant(const GearPair& pair, double k_mesh) {
-  TorsionalMesh m(pair, [](double, double) { return 1.0; }, 3);
+  TorsionalMesh m(
+      pair, [](double, double) { return 1.0; }, 3);
   m.constant_mesh_n_per_m_ = k_mesh;
   m.Summarize();
   return m;
@@ -131,8 +132,8 @@ double TorsionalMesh::PairShare(int segment, int index, double phase) const {
 double TorsionalMesh::ShareAt(double s, bool left) const {
   s = std::clamp(s, 0.0, length_m_);
   const double pb = base_pitch_m_;
-  const int j = std::min(static_cast<int>(std::floor(s / pb)),
-                         static_cast<int>(std::floor(length_m_ / pb)));
+  const int j =
+      std::min(static_cast<int>(std::floor(s / pb)), static_cast<int>(std::floor(length_m_ / pb)));
   double phase = s - j * pb;
   // The segment on the requested side of a switch.
   const double nudge = 1e-9 * pb;

@@ -10,18 +10,24 @@ namespace tehl {
 
 std::string ToString(ContactState s) {
   switch (s) {
-    case ContactState::kDriveFlank: return "drive_flank";
-    case ContactState::kSeparated: return "separated";
-    case ContactState::kBackFlank: return "back_flank";
+    case ContactState::kDriveFlank:
+      return "drive_flank";
+    case ContactState::kSeparated:
+      return "separated";
+    case ContactState::kBackFlank:
+      return "back_flank";
   }
   return "unknown";
 }
 
 std::string ToString(FrictionLaw f) {
   switch (f) {
-    case FrictionLaw::kNone: return "none";
-    case FrictionLaw::kConstant: return "constant";
-    case FrictionLaw::kBuckingham: return "buckingham";
+    case FrictionLaw::kNone:
+      return "none";
+    case FrictionLaw::kConstant:
+      return "constant";
+    case FrictionLaw::kBuckingham:
+      return "buckingham";
   }
   return "unknown";
 }
@@ -82,19 +88,20 @@ double TorsionalModel::PhaseAt(long period, double t) const {
   return contact_speed_m_s() * t - period * mesh_.base_pitch_m();
 }
 
-double TorsionalModel::MeshForce(ContactState s, int seg, double phase, double x,
-                                 double v) const {
+double TorsionalModel::MeshForce(ContactState s, int seg, double phase, double x, double v) const {
   switch (s) {
-    case ContactState::kDriveFlank: return mesh_.MeshStiffness(seg, phase) * x + c_ * v;
-    case ContactState::kSeparated: return 0.0;
+    case ContactState::kDriveFlank:
+      return mesh_.MeshStiffness(seg, phase) * x + c_ * v;
+    case ContactState::kSeparated:
+      return 0.0;
     case ContactState::kBackFlank:
       return mesh_.MeshStiffness(seg, phase) * (x + p_.backlash_m) + c_ * v;
   }
   return 0.0;
 }
 
-double TorsionalModel::Acceleration(ContactState s, int seg, double phase, double x,
-                                    double v) const {
+double TorsionalModel::Acceleration(
+    ContactState s, int seg, double phase, double x, double v) const {
   const double rb1 = mesh_.pinion_base_radius_m(), rb2 = mesh_.wheel_base_radius_m();
   const double j1 = p_.pinion_inertia_kg_m2, j2 = p_.wheel_inertia_kg_m2;
   const double f = MeshForce(s, seg, phase, x, v);
@@ -148,9 +155,12 @@ int TorsionalModel::GuardCount() const { return state_ == ContactState::kSeparat
 double TorsionalModel::Guard(int i, double, const double* y) const {
   // Valid while >= 0. Drive flank: x >= 0. Separated: -x >= 0 and x + b >= 0. Back: -(x+b).
   switch (state_) {
-    case ContactState::kDriveFlank: return y[0];
-    case ContactState::kSeparated: return i == 0 ? -y[0] : y[0] + p_.backlash_m;
-    case ContactState::kBackFlank: return -(y[0] + p_.backlash_m);
+    case ContactState::kDriveFlank:
+      return y[0];
+    case ContactState::kSeparated:
+      return i == 0 ? -y[0] : y[0] + p_.backlash_m;
+    case ContactState::kBackFlank:
+      return -(y[0] + p_.backlash_m);
   }
   return 1.0;
 }

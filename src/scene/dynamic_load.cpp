@@ -16,7 +16,8 @@ DynamicsCase ReadDynamicsCase(Document& doc, const GearCase& c) {
   p.pinion_speed_rad_s = c.operating.pinion_speed_rad_s;
   p.pinion_torque_nm = c.operating.pinion_torque_nm;
   p.damping_ratio = doc.Real("dynamics", "damping_ratio");
-  p.friction = FrictionLawFromString(doc.String("dynamics", "friction")).value_or(FrictionLaw::kNone);
+  p.friction =
+      FrictionLawFromString(doc.String("dynamics", "friction")).value_or(FrictionLaw::kNone);
   p.friction_coefficient = doc.Real("dynamics", "friction_coefficient");
 
   const double b = pair.spec().face_width_m;
@@ -49,10 +50,10 @@ DynamicsCase ReadDynamicsCase(Document& doc, const GearCase& c) {
   o.max_periods = static_cast<int>(doc.Int("dynamics", "max_periods"));
   o.output_samples = static_cast<int>(doc.Int("dynamics", "output_samples"));
   if (doc.Given("dynamics", "friction_coefficient") && p.friction != FrictionLaw::kConstant)
-    doc.Problem("dynamics", "friction_coefficient",
-                "is used only with friction = \"constant\" (friction is \"" +
-                    ToString(p.friction) + "\")",
-                "friction = \"constant\", or remove friction_coefficient");
+    doc.Problem(
+        "dynamics", "friction_coefficient",
+        "is used only with friction = \"constant\" (friction is \"" + ToString(p.friction) + "\")",
+        "friction = \"constant\", or remove friction_coefficient");
   return d;
 }
 

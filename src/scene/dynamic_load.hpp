@@ -21,7 +21,7 @@
 namespace tehl::internal {
 
 struct DynamicsCase {
-  TorsionalParameters params;       // at the case's speed and torque
+  TorsionalParameters params;  // at the case's speed and torque
   DynamicResponseOptions options;
   bool inertia_from_blanks[2] = {true, true};  // pinion, wheel: solid discs (not given)
   bool backlash_from_geometry = true;          // backlash_m not given

@@ -66,8 +66,8 @@ TEST(MeshCycleDynamic, TheFilmRunsWithTheDynamicLoad) {
   ASSERT_EQ(dyn.steps.size(), stat.steps.size());
   double largest = 0;
   for (size_t i = 0; i < dyn.steps.size(); ++i)
-    largest = std::max(largest,
-                       std::abs(dyn.steps[i].load_n_per_m / stat.steps[i].load_n_per_m - 1));
+    largest =
+        std::max(largest, std::abs(dyn.steps[i].load_n_per_m / stat.steps[i].load_n_per_m - 1));
   if (largest == 0)
     GTEST_SKIP() << "the mesh cycle (mesh_cycle_scene.cpp) does not take the dynamic load yet";
   EXPECT_GT(largest, 0.2);

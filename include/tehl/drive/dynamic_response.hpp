@@ -23,43 +23,43 @@
 namespace tehl {
 
 struct DynamicResponseOptions {
-  double relative_tolerance = 1e-8;     // integrator rtol; atol = rtol (x_s, w_n x_s) [-]
-  double periodic_tolerance = 1e-6;     // tol of the periodicity test above [-]
-  int min_periods = 2;                  // periods integrated at least [-], >= 2
-  int max_periods = 5000;               // periods integrated at most [-], >= min_periods
-  int output_samples = 400;             // uniform samples of the periodic response [-], >= 8
-  int peak_samples_per_step = 8;        // dense-output points per step for the extremes [-]
+  double relative_tolerance = 1e-8;           // integrator rtol; atol = rtol (x_s, w_n x_s) [-]
+  double periodic_tolerance = 1e-6;           // tol of the periodicity test above [-]
+  int min_periods = 2;                        // periods integrated at least [-], >= 2
+  int max_periods = 5000;                     // periods integrated at most [-], >= min_periods
+  int output_samples = 400;                   // uniform samples of the periodic response [-], >= 8
+  int peak_samples_per_step = 8;              // dense-output points per step for the extremes [-]
   std::vector<std::string> Validate() const;  // every violated rule; empty = valid
 };
 
 struct DynamicSample {
-  double phase_m = 0;        // mesh phase phi in [0, p_b] [m]
-  double time_s = 0;         // from the start of the period [s]
-  double x_m = 0;            // dynamic transmission error [m]
-  double v_m_s = 0;          // its rate [m/s]
-  double force_n = 0;        // dynamic mesh force F [N]
+  double phase_m = 0;            // mesh phase phi in [0, p_b] [m]
+  double time_s = 0;             // from the start of the period [s]
+  double x_m = 0;                // dynamic transmission error [m]
+  double v_m_s = 0;              // its rate [m/s]
+  double force_n = 0;            // dynamic mesh force F [N]
   double stiffness_n_per_m = 0;  // k_mesh at this phase [N/m]
   ContactState state = ContactState::kDriveFlank;
 };
 
 struct DynamicResponse {
-  bool periodic = false;           // the periodicity test passed
-  int periods = 0;                 // mesh periods integrated [-]
+  bool periodic = false;  // the periodicity test passed
+  int periods = 0;        // mesh periods integrated [-]
   std::string message;
-  double pinion_speed_rad_s = 0;   // w1 [rad/s]
-  double mesh_frequency_hz = 0;    // f_m = z1 w1 / (2 pi) [Hz]
-  double natural_frequency_hz = 0; // f_n = sqrt(k_mean / m_e) / (2 pi) [Hz]
-  double mesh_period_s = 0;        // T = p_b / (r_b1 w1) [s]
-  double static_force_n = 0;       // F_s = T_m / r_b1 [N]
-  double peak_force_n = 0;         // max F over the periodic period [N]
-  double min_force_n = 0;          // min F [N]
-  double dynamic_load_factor = 0;  // peak_force_n / static_force_n [-]
-  double separated_fraction = 0;   // fraction of the period with F = 0 (separated) [-]
-  double back_flank_fraction = 0;  // fraction of the period on the back flank [-]
+  double pinion_speed_rad_s = 0;             // w1 [rad/s]
+  double mesh_frequency_hz = 0;              // f_m = z1 w1 / (2 pi) [Hz]
+  double natural_frequency_hz = 0;           // f_n = sqrt(k_mean / m_e) / (2 pi) [Hz]
+  double mesh_period_s = 0;                  // T = p_b / (r_b1 w1) [s]
+  double static_force_n = 0;                 // F_s = T_m / r_b1 [N]
+  double peak_force_n = 0;                   // max F over the periodic period [N]
+  double min_force_n = 0;                    // min F [N]
+  double dynamic_load_factor = 0;            // peak_force_n / static_force_n [-]
+  double separated_fraction = 0;             // fraction of the period with F = 0 (separated) [-]
+  double back_flank_fraction = 0;            // fraction of the period on the back flank [-]
   std::vector<double> contact_loss_times_s;  // drive-flank contact lost, from period start [s]
-  double periodicity_error = 0;    // last value of the test above, relative [-]
-  IntegratorSummary integrator;    // totals over all periods
-  std::vector<DynamicSample> samples;  // output_samples + both sides of each segment end
+  double periodicity_error = 0;              // last value of the test above, relative [-]
+  IntegratorSummary integrator;              // totals over all periods
+  std::vector<DynamicSample> samples;        // output_samples + both sides of each segment end
 
   // Mesh force at phase phi in [0, p_b] of the periodic period; `left` takes the limit from
   // below at a jump [N].
@@ -74,8 +74,8 @@ struct DynamicResponse {
     int segment = 0;
   };
   std::vector<Step> steps;
-  double period_start_s = 0;   // absolute time of the periodic period's start [s]
-  double contact_speed_m_s = 0;  // r_b1 w1 [m/s]
+  double period_start_s = 0;              // absolute time of the periodic period's start [s]
+  double contact_speed_m_s = 0;           // r_b1 w1 [m/s]
   const TorsionalModel* model = nullptr;  // for forces; valid while the model lives
 };
 
@@ -85,8 +85,8 @@ DynamicResponse SolvePeriodicResponse(TorsionalModel& model, const DynamicRespon
 // Tracked pair along the path of contact: the dynamic load per unit face width at s,
 // w_dyn(s) = F(phi(s)) share(s) / b, phi(s) = s mod p_b, share by the pair stiffness split.
 struct PairLoadPoint {
-  double s_m = 0;            // from A [m]
-  double share = 0;          // stiffness share of the tracked pair [-]
+  double s_m = 0;              // from A [m]
+  double share = 0;            // stiffness share of the tracked pair [-]
   double static_n_per_m = 0;   // F_s share / b [N/m]
   double dynamic_n_per_m = 0;  // F(phi) share / b [N/m]
 };
@@ -109,9 +109,9 @@ struct SweepPoint {
 };
 // Every speed with the parameters of `p` otherwise. Runs the speeds on `threads` threads.
 std::vector<SweepPoint> SweepSpeeds(const TorsionalMesh& mesh,
-                                   const TorsionalParameters& p,
-                                   const std::vector<double>& speeds_rpm,
-                                   const DynamicResponseOptions& o,
-                                   int threads = 1);
+                                    const TorsionalParameters& p,
+                                    const std::vector<double>& speeds_rpm,
+                                    const DynamicResponseOptions& o,
+                                    int threads = 1);
 
 }  // namespace tehl

@@ -52,10 +52,10 @@ class HybridOdeSystem {
 // One accepted step and its continuous extension, valid on [t0_s, t_end_s]; t_end_s is
 // t0_s + h_s, or earlier when the step was cut at a state event.
 struct DenseStep {
-  double t0_s = 0;                    // step start [s]
-  double h_s = 0;                     // full step the coefficients were built for [s]
-  double t_end_s = 0;                 // end of validity [s]
-  std::vector<double> coefficients;   // 5 blocks of Dimension() values (Hairer's rcont1..5)
+  double t0_s = 0;                   // step start [s]
+  double h_s = 0;                    // full step the coefficients were built for [s]
+  double t_end_s = 0;                // end of validity [s]
+  std::vector<double> coefficients;  // 5 blocks of Dimension() values (Hairer's rcont1..5)
   int dimension() const { return static_cast<int>(coefficients.size() / 5); }
   // y(t) for t in [t0_s, t_end_s] (4th-order accurate) into y[0..dimension).
   void Evaluate(double t, double* y) const;
@@ -63,17 +63,17 @@ struct DenseStep {
 };
 
 struct IntegratorOptions {
-  double relative_tolerance = 1e-8;          // rtol [-], > 0
-  std::vector<double> absolute_tolerance;    // atol per component [units of y]; empty = rtol
-  double initial_step_s = 0;                 // first step [s]; 0 = automatic (Hairer's hinit)
+  double relative_tolerance = 1e-8;        // rtol [-], > 0
+  std::vector<double> absolute_tolerance;  // atol per component [units of y]; empty = rtol
+  double initial_step_s = 0;               // first step [s]; 0 = automatic (Hairer's hinit)
   double max_step_s = std::numeric_limits<double>::infinity();  // [s], > 0
-  long max_steps = 50'000'000;               // accepted + rejected steps per call [-]
-  double safety = 0.9;                       // step-size safety factor, in (0, 1) [-]
-  double min_factor = 0.2;                   // smallest step-size ratio, in (0, 1) [-]
-  double max_factor = 10.0;                  // largest step-size ratio, > 1 [-]
-  double pi_beta = 0.04;                     // beta of the PI controller, in [0, 0.2) [-]
-  double event_time_tolerance = 1e-12;       // event location, relative to the step [-]
-  int guard_samples = 3;                     // interior dense-output points checked [-], >= 0
+  long max_steps = 50'000'000;                // accepted + rejected steps per call [-]
+  double safety = 0.9;                        // step-size safety factor, in (0, 1) [-]
+  double min_factor = 0.2;                    // smallest step-size ratio, in (0, 1) [-]
+  double max_factor = 10.0;                   // largest step-size ratio, > 1 [-]
+  double pi_beta = 0.04;                      // beta of the PI controller, in [0, 0.2) [-]
+  double event_time_tolerance = 1e-12;        // event location, relative to the step [-]
+  int guard_samples = 3;                      // interior dense-output points checked [-], >= 0
   std::vector<std::string> Validate() const;  // every violated rule; empty = valid
 };
 
@@ -119,7 +119,7 @@ class DormandPrince54 {
 
  private:
   IntegratorOptions options_;
-  double step_s_ = 0;        // proposal for the next step [s]; 0 = not yet known
+  double step_s_ = 0;         // proposal for the next step [s]; 0 = not yet known
   double error_prev_ = 1e-4;  // PI memory
 };
 

@@ -40,11 +40,11 @@ class TorsionalMesh {
   // pairs in contact (for limits and tests).
   static TorsionalMesh Constant(const GearPair& pair, double mesh_stiffness_n_per_m);
 
-  double base_pitch_m() const { return base_pitch_m_; }              // p_b [m]
-  double length_m() const { return length_m_; }                      // g_alpha [m]
-  double pitch_point_m() const { return s_pitch_m_; }                // s_C [m]
-  double pinion_base_radius_m() const { return rb1_m_; }             // r_b1 [m]
-  double wheel_base_radius_m() const { return rb2_m_; }              // r_b2 [m]
+  double base_pitch_m() const { return base_pitch_m_; }               // p_b [m]
+  double length_m() const { return length_m_; }                       // g_alpha [m]
+  double pitch_point_m() const { return s_pitch_m_; }                 // s_C [m]
+  double pinion_base_radius_m() const { return rb1_m_; }              // r_b1 [m]
+  double wheel_base_radius_m() const { return rb2_m_; }               // r_b2 [m]
   double contact_ratio() const { return length_m_ / base_pitch_m_; }  // eps_alpha [-]
   int pinion_teeth() const { return z1_; }
   int wheel_teeth() const { return z2_; }
@@ -56,8 +56,8 @@ class TorsionalMesh {
   // Segment holding phase phi in [0, p_b): begin <= phi < end.
   int SegmentAt(double phase_m) const;
 
-  double PairStiffness(double s_m) const;                      // k(s), s in [0, g_alpha] [N/m]
-  double MeshStiffness(int segment, double phase_m) const;     // sum over the pairs [N/m]
+  double PairStiffness(double s_m) const;                   // k(s), s in [0, g_alpha] [N/m]
+  double MeshStiffness(int segment, double phase_m) const;  // sum over the pairs [N/m]
   // Share of pair `index` (position in segments()[segment].pairs) of the mesh force: its
   // stiffness over the sum (equal deflection of parallel pairs) [-].
   double PairShare(int segment, int index, double phase_m) const;
@@ -79,7 +79,7 @@ class TorsionalMesh {
   double start_from_t1_m_ = 0, tangent_length_m_ = 0;
   bool internal_ = false;
   int z1_ = 0, z2_ = 0;
-  double constant_mesh_n_per_m_ = 0;  // > 0: constant mode
+  double constant_mesh_n_per_m_ = 0;                        // > 0: constant mode
   std::vector<double> nodes_m_, values_n_per_m_, weights_;  // Chebyshev-Lobatto interpolant
   std::vector<MeshSegment> segments_;
   double mean_n_per_m_ = 0, min_n_per_m_ = 0, max_n_per_m_ = 0;

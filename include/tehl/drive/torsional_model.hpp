@@ -52,14 +52,14 @@ double BuckinghamFriction(double sliding_speed_m_s);
 double DiscInertia(double density_kg_m3, double face_width_m, double radius_m);
 
 struct TorsionalParameters {
-  double pinion_inertia_kg_m2 = 0;   // J1 [kg m^2], > 0
-  double wheel_inertia_kg_m2 = 0;    // J2 [kg m^2], > 0
-  double pinion_torque_nm = 0;       // T_m on the pinion [N m], > 0; T_L = T_m r_b2 / r_b1
-  double pinion_speed_rad_s = 0;     // nominal w1 [rad/s], > 0
-  double damping_ratio = 0.05;       // zeta [-], in [0, 1); seed 000: 0.03-0.17
-  double backlash_m = 0;             // b along the line of action [m], >= 0
+  double pinion_inertia_kg_m2 = 0;  // J1 [kg m^2], > 0
+  double wheel_inertia_kg_m2 = 0;   // J2 [kg m^2], > 0
+  double pinion_torque_nm = 0;      // T_m on the pinion [N m], > 0; T_L = T_m r_b2 / r_b1
+  double pinion_speed_rad_s = 0;    // nominal w1 [rad/s], > 0
+  double damping_ratio = 0.05;      // zeta [-], in [0, 1); seed 000: 0.03-0.17
+  double backlash_m = 0;            // b along the line of action [m], >= 0
   FrictionLaw friction = FrictionLaw::kNone;
-  double friction_coefficient = 0.05;  // mu for FrictionLaw::kConstant [-], in [0, 1)
+  double friction_coefficient = 0.05;         // mu for FrictionLaw::kConstant [-], in [0, 1)
   std::vector<std::string> Validate() const;  // every violated rule; empty = valid
 };
 
@@ -72,19 +72,19 @@ class TorsionalModel : public HybridOdeSystem {
 
   const TorsionalMesh& mesh() const { return mesh_; }
   const TorsionalParameters& parameters() const { return p_; }
-  double equivalent_mass_kg() const { return m_e_; }                 // m_e [kg]
-  double damping_n_s_per_m() const { return c_; }                    // c [N s/m]
-  double static_force_n() const { return f_static_; }                // F_s = T_m / r_b1 [N]
-  double natural_frequency_hz() const;                               // sqrt(k_mean/m_e)/(2 pi)
-  double mesh_frequency_hz() const;                                  // z1 w1 / (2 pi)
-  double mesh_period_s() const;                                      // p_b / (r_b1 w1)
+  double equivalent_mass_kg() const { return m_e_; }   // m_e [kg]
+  double damping_n_s_per_m() const { return c_; }      // c [N s/m]
+  double static_force_n() const { return f_static_; }  // F_s = T_m / r_b1 [N]
+  double natural_frequency_hz() const;                 // sqrt(k_mean/m_e)/(2 pi)
+  double mesh_frequency_hz() const;                    // z1 w1 / (2 pi)
+  double mesh_period_s() const;                        // p_b / (r_b1 w1)
   double contact_speed_m_s() const { return mesh_.pinion_base_radius_m() * p_.pinion_speed_rad_s; }
 
   // Mesh force (eqs. 4.37-4.42) in a given state and segment at phase phi [N].
   double MeshForce(ContactState state, int segment, double phase_m, double x_m, double v_m_s) const;
   // x'' in a given state and segment [m/s^2].
-  double Acceleration(ContactState state, int segment, double phase_m, double x_m,
-                      double v_m_s) const;
+  double Acceleration(
+      ContactState state, int segment, double phase_m, double x_m, double v_m_s) const;
   // Phase of time t within period `period` [m] (not reduced).
   double PhaseAt(long period, double t_s) const;
 

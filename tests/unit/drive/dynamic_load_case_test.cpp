@@ -1,7 +1,5 @@
 // The [dynamics] section and the dynamic_load effect of a gear case (src/scene/dynamic_load.*):
 // defaults from the blanks and the geometry, the cycle rows' dynamic w, and bad input.
-#include "scene/dynamic_load.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +8,7 @@
 #include <sstream>
 
 #include "scene/case_reader.hpp"
+#include "scene/dynamic_load.hpp"
 #include "scene/gear_case.hpp"
 #include "tehl/error.hpp"
 #include "tehl/units.hpp"
@@ -67,7 +66,8 @@ TEST(DynamicsCase, BacklashOfAWiderCentreDistanceIsAlongTheLineOfAction) {
   // a = 140.1 mm instead of 140: j_bn = j_t cos(alpha_wt), j_t of the gear pair.
   std::string text = CaseText("seed004_sae40_dynamic");
   text = std::regex_replace(text, std::regex("\nbacklash_m = [^\n]*"), "");
-  text = std::regex_replace(text, std::regex("\\[gear\\]\n"), "[gear]\ncenter_distance_m = 0.1401\n");
+  text =
+      std::regex_replace(text, std::regex("\\[gear\\]\n"), "[gear]\ncenter_distance_m = 0.1401\n");
   internal::Document doc = internal::ReadCaseDocument(WriteCase(text, "wide"));
   std::optional<internal::GearCase> c = internal::ReadGearCase(doc);
   ASSERT_TRUE(c && c->pair) << (doc.problems().empty() ? "" : doc.problems()[0].ToString());
@@ -93,8 +93,8 @@ TEST(DynamicLoadEffect, CycleRowsCarryTheDynamicLoadAtTheCaseSpeed) {
   double largest = 0;
   for (size_t i = 0; i < rd.size(); ++i) {
     const double s = rd[i].contact.s_m;
-    EXPECT_NEAR(rd[i].load_n_per_m,
-                rs[i].load_n_per_m * dyn.dynamic_load->LoadFactorAt(s, s > 0), 1e-9 * rs[i].load_n_per_m);
+    EXPECT_NEAR(rd[i].load_n_per_m, rs[i].load_n_per_m * dyn.dynamic_load->LoadFactorAt(s, s > 0),
+                1e-9 * rs[i].load_n_per_m);
     EXPECT_GT(rd[i].load_n_per_m, 0.0);
     largest = std::max(largest, std::abs(rd[i].load_n_per_m / rs[i].load_n_per_m - 1));
   }
@@ -129,7 +129,8 @@ void ExpectProblem(const std::string& text, const std::string& key, const std::s
   } catch (const InputError& e) {
     bool found = false;
     for (const InputProblem& p : e.problems())
-      found = found || (p.key == key && p.file == path && (p.line > 0 || key == "effects.dynamic_load"));
+      found = found ||
+              (p.key == key && p.file == path && (p.line > 0 || key == "effects.dynamic_load"));
     EXPECT_TRUE(found) << e.what();
   }
 }

@@ -87,18 +87,19 @@ TEST(DynamicSweep, LightDampingSeparatesTheTeethNearResonance) {
   d.params.pinion_speed_rad_s = RpmToRadPerS(ResonanceRpm(d));
   TorsionalModel m(*d.mesh, d.params);
   const DynamicResponse r = SolvePeriodicResponse(m, DynamicResponseOptions{});
-  std::printf("%s; sep %.3f back %.3f min %.3g peak %.3g\n", r.message.c_str(), r.separated_fraction,
-              r.back_flank_fraction, r.min_force_n, r.peak_force_n);
+  std::printf("%s; sep %.3f back %.3f min %.3g peak %.3g\n", r.message.c_str(),
+              r.separated_fraction, r.back_flank_fraction, r.min_force_n, r.peak_force_n);
   EXPECT_GT(r.separated_fraction, 0.01);
   EXPECT_FALSE(r.contact_loss_times_s.empty());
   int zero = 0;
-  for (const DynamicSample& s : r.samples) zero += s.state == ContactState::kSeparated && s.force_n == 0;
+  for (const DynamicSample& s : r.samples)
+    zero += s.state == ContactState::kSeparated && s.force_n == 0;
   EXPECT_GT(zero, 0);
 }
 
 // x(T) in drive-flank contact from (t0, y0) by classical RK4 with n steps, in one segment.
-double DriveFlankX(const TorsionalModel& m, int seg, long period, double t0, const double* y0,
-                   double t1, int n) {
+double DriveFlankX(
+    const TorsionalModel& m, int seg, long period, double t0, const double* y0, double t1, int n) {
   double x = y0[0], v = y0[1];
   const double h = (t1 - t0) / n;
   auto acc = [&](double t, double xx, double vv) {
@@ -139,8 +140,9 @@ TEST(DynamicSweep, ContactLossTimesMatchABisectionReference) {
     it->dense.Evaluate(t0, y0);
     ASSERT_GT(y0[0], 0.0);
     double lo = t0, hi = t0 + 2 * (te - t0);
-    const double seg_end = (period * d.mesh->base_pitch_m() +
-                            d.mesh->segments()[it->segment].end_m) / m.contact_speed_m_s();
+    const double seg_end =
+        (period * d.mesh->base_pitch_m() + d.mesh->segments()[it->segment].end_m) /
+        m.contact_speed_m_s();
     hi = std::min(hi, seg_end);
     ASSERT_LT(DriveFlankX(m, it->segment, period, t0, y0, hi, 4000), 0.0);
     for (int i = 0; i < 60; ++i) {

@@ -84,8 +84,7 @@ TEST(TorsionalMesh, PeriodMeanEqualsTheSampledMeanOfTheGearCore) {
   // k(s) over the path (Simpson). Both are the period mean.
   testing::Seed000Dynamics d;
   const PathOfContact path(d.pair, 1.0);
-  const MeshStiffnessSummary ref =
-      SummarizeMeshStiffness(path, AsPairStiffnessFn(*d.model), 4000);
+  const MeshStiffnessSummary ref = SummarizeMeshStiffness(path, AsPairStiffnessFn(*d.model), 4000);
   EXPECT_NEAR(d.mesh->mean_stiffness_n_per_m() / ref.mean_n_per_m, 1.0, 1e-3);
   EXPECT_NEAR(d.mesh->min_stiffness_n_per_m() / ref.min_n_per_m, 1.0, 1e-3);
   EXPECT_NEAR(d.mesh->max_stiffness_n_per_m() / ref.max_n_per_m, 1.0, 1e-3);
