@@ -249,6 +249,7 @@ class TrainBuilder {
                 std::string(same ? "over-determined: " : "contradictory: ") +
                     "the meshes, shafts and earlier inputs already fix the speed of " + m.name +
                     " at " + Num(std::abs(implied) < 1e-12 ? 0.0 : implied) +
+                    (m.kind == MemberKind::kRack ? " m/s" : " rad/s") +
                     (std::abs(implied) < 1e-12 ? " (the train is locked there)" : ""),
                 "a speed on a member the other relations leave free (remove this one)");
       }

@@ -1,6 +1,7 @@
 #include "drive/motor_schema.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "tehl/units.hpp"
 
@@ -92,6 +93,42 @@ std::optional<DcMotorSpec> ReadMotorSection(Document& doc, const std::string& se
     return std::nullopt;
   }
   return s;
+}
+
+std::vector<KeySpec> CaseMotorKeys() {
+  std::vector<KeySpec> keys = MotorKeys();
+  keys.push_back(Real("train_value", "-", "1.0",
+                      "w_pinion / w_motor of the drive between motor and pinion (sign ignored)",
+                      0.0, std::nullopt, false));
+  keys.push_back(Real("efficiency", "-", "1.0", "efficiency of that drive", 0.0, 1.0, false));
+  return keys;
+}
+
+std::optional<double> MotorPinionSpeed(Document& doc, const std::string& section,
+                                       double pinion_torque_nm) {
+  const std::optional<DcMotorSpec> spec = ReadMotorSection(doc, section);
+  if (!spec) return std::nullopt;
+  const DcMotor motor(*spec);
+  MotorLoad load;
+  load.torque_nm = pinion_torque_nm;
+  load.train_value = std::abs(doc.Real(section, "train_value"));
+  load.efficiency = doc.Real(section, "efficiency");
+  if (const auto w = MotorSpeedCommand(doc, section)) {
+    const ControlledPoint c = SolveControlledPoint(motor, load, *w);
+    if (!c.feasible) {
+      doc.Problem(section, "speed_command_rpm", "the drive cannot carry the pinion torque at "
+                  "this speed: " + c.message, "a speed and load inside the motor's envelope");
+      return std::nullopt;
+    }
+    return load.train_value * *w;
+  }
+  const MotorOperatingPoint op = SolveOperatingPoint(motor, load);
+  if (!op.usable() || op.motor_speed_rad_s <= 0) {
+    doc.Problem(section, "type", "no running operating point against the pinion torque: " +
+                op.message, "a motor whose torque-speed line meets the load");
+    return std::nullopt;
+  }
+  return load.train_value * op.motor_speed_rad_s;
 }
 
 std::optional<double> MotorSpeedCommand(const Document& doc, const std::string& section) {

@@ -23,4 +23,15 @@ std::optional<DcMotorSpec> ReadMotorSection(Document& doc, const std::string& se
 // The commanded motor speed of `section` [rad/s], if speed_command_rpm is given.
 std::optional<double> MotorSpeedCommand(const Document& doc, const std::string& section);
 
+// Keys of a case file's [motor]: MotorKeys() plus train_value and efficiency (the drive
+// between the motor and the pinion).
+std::vector<KeySpec> CaseMotorKeys();
+
+// The pinion speed of a gear case whose pinion a DC motor drives: the motor's operating point
+// against the pinion torque reflected through [motor] train_value and efficiency (or the
+// speed command). Problems go to `doc` at the [motor] keys; nothing when there are any.
+// [rad/s], > 0.
+std::optional<double> MotorPinionSpeed(Document& doc, const std::string& section,
+                                       double pinion_torque_nm);
+
 }  // namespace tehl::internal

@@ -293,9 +293,13 @@ class TrainReader {
                    "missing or unknown", "input = the name of the member the motor drives");
       return;
     }
-    if (out_.load_member.empty() || out_.spec.Index(out_.load_member) < 0)
+    const int loaded = out_.spec.Index(out_.load_member);
+    if (loaded < 0)
       doc_.Problem("load", "member", "the loaded member is missing or unknown",
-                   "member = a gear, carrier or rack of the train (or [train] output)");
+                   "member = a gear or carrier of the train (or [train] output)");
+    else if (out_.spec.members[loaded].kind == MemberKind::kRack)
+      doc_.Problem("load", "member", "a load torque needs a rotating member, not a rack",
+                   "the rack's pinion, with the rack force times its pitch radius as torque");
     for (const TrainMember& m : out_.spec.members) {
       if (m.name == input && m.speed)
         doc_.Problem(m.where, "speed_rpm", "the motor gives the speed of " + input + " (speed "

@@ -1,6 +1,7 @@
 #include "tehl/scene/case_schema.hpp"
 
 #include "base/schema.hpp"
+#include "drive/motor_schema.hpp"
 
 namespace tehl {
 namespace {
@@ -161,6 +162,12 @@ SectionSpec DynamicsSection() {
   }};
 }
 
+SectionSpec MotorSection() {
+  return {"motor", "a DC motor driving the pinion (seed 001 section 3; docs/trains.md): the "
+          "pinion speed is its operating point against [operating] pinion_torque_nm",
+          false, CaseMotorKeys()};
+}
+
 Schema BuildCaseSchema() {
   Schema s;
   s.kind = "case";
@@ -178,6 +185,7 @@ Schema BuildCaseSchema() {
       NumericsSection(),
       OutputSection(),
       DynamicsSection(),
+      MotorSection(),
   };
   return s;
 }

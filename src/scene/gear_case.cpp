@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "drive/motor_schema.hpp"
 #include "scene/dynamic_load.hpp"
 #include "tehl/error.hpp"
 #include "tehl/gear/path_of_contact.hpp"
@@ -118,6 +119,12 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
   } else {
     c.operating.pinion_torque_nm = doc.Real("operating", "pinion_torque_nm");
     c.power_w = c.operating.pinion_torque_nm * w1;
+  }
+  if (doc.HasSection("motor")) {  // the pinion speed is the DC motor's operating point
+    const auto w = MotorPinionSpeed(doc, "motor", c.operating.pinion_torque_nm);
+    if (!w) return std::nullopt;
+    c.operating.pinion_speed_rad_s = *w;
+    c.power_w = c.operating.pinion_torque_nm * *w;
   }
 
   try {

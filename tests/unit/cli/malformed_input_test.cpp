@@ -20,13 +20,13 @@ namespace {
 namespace fs = std::filesystem;
 
 struct MalformedFile {
-  std::string kind;  // "case", "lubricant" or "study"
+  std::string kind;  // "case", "lubricant", "study" or "train"
   std::string path;  // absolute
 };
 
 std::vector<MalformedFile> Corpus() {
   std::vector<MalformedFile> files;
-  for (const char* kind : {"case", "lubricant", "study"}) {
+  for (const char* kind : {"case", "lubricant", "study", "train"}) {
     const fs::path dir = fs::path(TEHL_SOURCE_DIR) / "tests" / "malformed" / kind;
     if (!fs::is_directory(dir)) continue;
     for (const auto& e : fs::directory_iterator(dir))
@@ -66,6 +66,7 @@ TEST_P(MalformedInput, ExitsWithCodeTwoAndNamesFileLineAndKey) {
       f.kind == "case"    ? "case --check '" + f.path + "'"
       : f.kind == "study" ? "sweep --dry-run -q -o '" + testing::UniqueTempPath("study") +
                                 "' '" + f.path + "'"
+      : f.kind == "train" ? "train '" + f.path + "'"
                           : "lubricant '" + f.path + "'";
   const testing::RunResult r = testing::RunTehl(args);
   ASSERT_TRUE(r.exited) << f.path << ": killed by signal " << r.signal << "\n" << r.err;
@@ -94,6 +95,7 @@ TEST(MalformedCorpus, HasAtLeastTwentyFiveFilesOfBothKinds) {
   EXPECT_GE(count("case"), 10);
   EXPECT_GE(count("lubricant"), 10);
   EXPECT_GE(count("study"), 8);
+  EXPECT_GE(count("train"), 8);
 }
 
 // Controls: well-formed inputs pass, so the rejections above come from the defects.

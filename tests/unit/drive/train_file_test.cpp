@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -181,6 +182,48 @@ TEST(TrainFile, DeclaredPlanetCountThatCannotBeEquallySpacedIsRejected) {
       "[mesh.sp]\na = \"s\"\nb = \"p\"\n[mesh.pr]\na = \"p\"\nb = \"r\"\nkind = \"internal\"\n");
   EXPECT_NE(m.find("F:11: carrier.c.planets = 3: cannot be equally spaced"), std::string::npos)
       << m;
+}
+
+}  // namespace
+}  // namespace tehl
+
+namespace tehl {
+namespace {
+
+// A gear case whose pinion a DC motor drives ([motor] of the case schema): shunt motor with
+// flux K_w E / R_f = 0.5 * 220/110 = 1 V s/rad, R_a = 0.1 Ohm, a 2:1 reduction to the pinion
+// (train_value 0.5). Pinion torque 100 N m -> motor torque 50 N m, I_a = 50 A,
+// w_m = (220 - 5)/1 = 215 rad/s, pinion 107.5 rad/s.
+const char* kMotorCase =
+    "[gear]\nmodule_m = 0.002\nface_width_m = 0.025\n"
+    "[gear.pinion]\nteeth = 35\n[gear.wheel]\nteeth = 105\n"
+    "[operating]\npinion_torque_nm = 100.0\n"
+    "[lubricant]\nname = \"sae40\"\n"
+    "[motor]\ntype = \"shunt\"\nsupply_voltage_v = 220.0\narmature_resistance_ohm = 0.1\n"
+    "speed_constant = 0.5\nfield_resistance_ohm = 110.0\ntrain_value = 0.5\n";
+
+TEST(CaseMotor, PinionSpeedComesFromTheMotorOperatingPoint) {
+  const std::string path = testing::UniqueTempPath("motor_case.toml");
+  std::ofstream(path) << kMotorCase;
+  const auto r = testing::RunTehl("gear '" + path + "'");
+  std::remove(path.c_str());
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("(107.500 rad/s)"), std::string::npos) << r.out;
+}
+
+TEST(CaseMotor, SpeedInOperatingAndMotorIsGivenTwice) {
+  const std::string path = testing::UniqueTempPath("motor_case_twice.toml");
+  std::string text = kMotorCase;
+  text.insert(text.find("pinion_torque_nm"), "pinion_speed_rpm = 1000.0\n");
+  std::ofstream(path) << text;
+  const auto r = testing::RunTehl("case --check '" + path + "'");
+  std::remove(path.c_str());
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(":9: operating.pinion_speed_rpm = 1000.0: [motor] gives the pinion speed"),
+            std::string::npos)
+      << r.err;
 }
 
 }  // namespace
