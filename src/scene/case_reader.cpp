@@ -49,15 +49,29 @@ Document ReadCaseDocument(const std::string& path) {
     const int speeds = doc.Given("operating", "pinion_speed_rpm") +
                        doc.Given("operating", "pinion_speed_rad_s");
     const int loads = doc.Given("operating", "power_w") + doc.Given("operating", "pinion_torque_nm");
-    if (speeds != 1)
+    if (doc.HasSection("motor")) {  // the motor gives the speed, the load the torque
+      if (speeds > 0)
+        doc.Problem("operating", doc.Given("operating", "pinion_speed_rpm") ? "pinion_speed_rpm"
+                                                                          : "pinion_speed_rad_s",
+                    "[motor] gives the pinion speed: speed given twice",
+                    "no pinion speed in [operating] with a [motor]");
+      if (doc.Given("operating", "power_w"))
+        doc.Problem("operating", "power_w", "with a [motor] the load is a torque",
+                    "pinion_torque_nm");
+    } else if (speeds != 1) {
       doc.Problem("operating", "pinion_speed_rpm",
                   speeds ? "give the speed once, not twice" : "the pinion speed is missing",
                   "exactly one of pinion_speed_rpm, pinion_speed_rad_s");
+    }
     if (loads != 1)
       doc.Problem("operating", "power_w",
                   loads ? "give the load once, not twice" : "the transmitted load is missing",
                   "exactly one of power_w, pinion_torque_nm");
-  } else if (doc.HasSection("operating")) {
+  } else if (doc.HasSection("motor")) {
+    doc.Problem("motor", "", "[motor] drives the pinion of a gear pair",
+                "a [gear] case, or no [motor]");
+  }
+  if (!gear && doc.HasSection("operating")) {
     doc.Problem("operating", "", "[operating] belongs to a gear case",
                 "speeds and load of a [contact] case go in [contact]");
   }
