@@ -89,12 +89,13 @@ void Tables(std::ostream& o, const std::vector<TabulationTable>& tables) {
 void Planets(std::ostream& o, const internal::TrainFile& f) {
   for (const auto& p : f.planetary) {
     const PlanetRules& r = p.rules;
-    o << "\nPlanet rules, carrier " << p.carrier << ": sun " << p.sun << " (z = "
-      << p.set.sun_teeth << "), planet " << p.planet << " (z = " << *p.set.planet_teeth
-      << "), ring " << p.ring << " (z = " << p.set.ring_teeth << ")\n";
+    o << "\nPlanet rules, carrier " << p.carrier << ": sun " << p.sun << " (z = " << p.set.sun_teeth
+      << "), planet " << p.planet << " (z = " << *p.set.planet_teeth << "), ring " << p.ring
+      << " (z = " << p.set.ring_teeth << ")\n";
     o << "  coaxial (z_ring = z_sun + 2 z_planet): "
-      << (r.coaxial ? "yes" : "no - non-standard planet; the rules use the equivalent z_p = " +
-                                  Fmt("%.1f", r.coaxial_planet_teeth))
+      << (r.coaxial ? "yes"
+                    : "no - non-standard planet; the rules use the equivalent z_p = " +
+                          Fmt("%.1f", r.coaxial_planet_teeth))
       << "\n  tip clearance: N < " << Fmt("%.4f", r.clearance_limit) << ", at most "
       << r.max_by_clearance << " planets\n  equally spaced ((z_sun + z_ring)/N integer, "
       << r.total_teeth << "/N): N in {";
@@ -110,30 +111,28 @@ int Motor(std::ostream& o, const internal::TrainFile& f, const internal::TrainRe
   const DcMotor motor(*f.motor);
   const DcMotorSpec& s = motor.spec();
   o << "\nDC motor (" << ToString(s.type) << "): E = " << Fmt("%.6g", s.supply_voltage_v)
-    << " V, R_a = " << Fmt("%.6g", s.armature_resistance_ohm) << " Ohm, K_a = "
-    << Fmt("%.6g", motor.TorqueConstant());
+    << " V, R_a = " << Fmt("%.6g", s.armature_resistance_ohm)
+    << " Ohm, K_a = " << Fmt("%.6g", motor.TorqueConstant());
   if (s.type != DcMotorType::kPermanentMagnet && s.type != DcMotorType::kSeries)
     o << ", I_f = " << Fmt("%.6g", motor.FieldCurrent()) << " A";
   o << "\n  no-load speed "
-    << (std::isfinite(motor.NoLoadSpeed()) ? Fmt("%.6g", RadPerSToRpm(motor.NoLoadSpeed())) +
-                                                 " rpm"
+    << (std::isfinite(motor.NoLoadSpeed()) ? Fmt("%.6g", RadPerSToRpm(motor.NoLoadSpeed())) + " rpm"
                                            : std::string("unbounded (series)"))
     << ", stall torque " << Fmt("%.6g", motor.StallTorque()) << " N m\n";
   if (s.rated_current_a > 0)
-    o << "  base speed " << Fmt("%.6g", RadPerSToRpm(motor.BaseSpeed()))
-      << " rpm: constant torque " << Fmt("%.6g", motor.RatedTorque())
-      << " N m below it, constant power "
+    o << "  base speed " << Fmt("%.6g", RadPerSToRpm(motor.BaseSpeed())) << " rpm: constant torque "
+      << Fmt("%.6g", motor.RatedTorque()) << " N m below it, constant power "
       << Fmt("%.6g", motor.RatedTorque() * motor.BaseSpeed()) << " W above it\n";
   o << "  load on " << (f.load_member.empty() ? "the motor shaft" : f.load_member) << ": "
     << Fmt("%.6g", f.load.torque_nm) << " N m + " << Fmt("%.6g", f.load.viscous_nm_s)
-    << " N m s/rad |w|, w_load / w_motor = " << Fmt("%.8g", r.load_train_value)
-    << ", efficiency " << Fmt("%.4g", f.load.efficiency) << "\n";
+    << " N m s/rad |w|, w_load / w_motor = " << Fmt("%.8g", r.load_train_value) << ", efficiency "
+    << Fmt("%.4g", f.load.efficiency) << "\n";
   if (r.controlled) {
     const ControlledPoint& c = *r.controlled;
-    o << "  speed command " << Fmt("%.6g", RadPerSToRpm(*f.speed_command_rad_s)) << " rpm: "
-      << ToString(c.region) << "\n  armature voltage " << Fmt("%.6g", c.armature_voltage_v)
-      << " V, field current " << Fmt("%.6g", c.field_current_a) << " A, armature current "
-      << Fmt("%.6g", c.armature_current_a) << " A, motor torque "
+    o << "  speed command " << Fmt("%.6g", RadPerSToRpm(*f.speed_command_rad_s))
+      << " rpm: " << ToString(c.region) << "\n  armature voltage "
+      << Fmt("%.6g", c.armature_voltage_v) << " V, field current " << Fmt("%.6g", c.field_current_a)
+      << " A, armature current " << Fmt("%.6g", c.armature_current_a) << " A, motor torque "
       << Fmt("%.6g", c.motor_torque_nm) << " N m: " << c.message << "\n";
     return c.feasible ? kExitOk : kExitNotConverged;
   }
@@ -153,8 +152,8 @@ int Motor(std::ostream& o, const internal::TrainFile& f, const internal::TrainRe
 void WriteCsv(const std::string& path, const internal::TrainFile& f, const TrainSolution& s) {
   std::ofstream out(path);
   if (!out)
-    throw InputError(InputProblem{path, 0, "--csv", path, "cannot be written",
-                                  "a writable file path"});
+    throw InputError(
+        InputProblem{path, 0, "--csv", path, "cannot be written", "a writable file path"});
   out << "member,kind,teeth,speed_rad_s,speed_rpm,speed_m_s\n";
   for (size_t i = 0; i < f.spec.members.size(); ++i) {
     const TrainMember& m = f.spec.members[i];

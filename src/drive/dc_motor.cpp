@@ -18,10 +18,14 @@ bool Series(const DcMotorSpec& s) { return s.type == DcMotorType::kSeries; }
 
 std::string ToString(DcMotorType t) {
   switch (t) {
-    case DcMotorType::kSeparatelyExcited: return "separately_excited";
-    case DcMotorType::kShunt: return "shunt";
-    case DcMotorType::kPermanentMagnet: return "permanent_magnet";
-    case DcMotorType::kSeries: return "series";
+    case DcMotorType::kSeparatelyExcited:
+      return "separately_excited";
+    case DcMotorType::kShunt:
+      return "shunt";
+    case DcMotorType::kPermanentMagnet:
+      return "permanent_magnet";
+    case DcMotorType::kSeries:
+      return "series";
   }
   return "?";
 }
@@ -35,9 +39,12 @@ std::optional<DcMotorType> DcMotorTypeFromString(std::string_view s) {
 
 std::string ToString(SpeedRegion r) {
   switch (r) {
-    case SpeedRegion::kConstantTorque: return "constant torque (armature voltage control)";
-    case SpeedRegion::kConstantPower: return "constant power (field weakening)";
-    case SpeedRegion::kBeyondMaximum: return "beyond the maximum speed";
+    case SpeedRegion::kConstantTorque:
+      return "constant torque (armature voltage control)";
+    case SpeedRegion::kConstantPower:
+      return "constant power (field weakening)";
+    case SpeedRegion::kBeyondMaximum:
+      return "beyond the maximum speed";
   }
   return "?";
 }
@@ -58,12 +65,12 @@ DcMotor::DcMotor(const DcMotorSpec& spec) : spec_(spec) {
        spec.armature_resistance_ohm, "must be > 0", "a resistance > 0 [Ohm]");
   rule(positive(spec.speed_constant), "speed_constant", spec.speed_constant, "must be > 0",
        "K_w > 0 [V s/(A rad)], permanent magnet [V s/rad]");
-  rule(non_negative(spec.torque_constant), "torque_constant", spec.torque_constant,
-       "must be >= 0", "K_a >= 0 (0 = lossless K_a)");
-  rule(non_negative(spec.rated_current_a), "rated_current_a", spec.rated_current_a,
-       "must be >= 0", "I_r >= 0 [A] (0 = no speed-control envelope)");
-  rule(non_negative(spec.max_speed_rad_s), "max_speed_rad_s", spec.max_speed_rad_s,
-       "must be >= 0", "a speed >= 0 [rad/s] (0 = no limit)");
+  rule(non_negative(spec.torque_constant), "torque_constant", spec.torque_constant, "must be >= 0",
+       "K_a >= 0 (0 = lossless K_a)");
+  rule(non_negative(spec.rated_current_a), "rated_current_a", spec.rated_current_a, "must be >= 0",
+       "I_r >= 0 [A] (0 = no speed-control envelope)");
+  rule(non_negative(spec.max_speed_rad_s), "max_speed_rad_s", spec.max_speed_rad_s, "must be >= 0",
+       "a speed >= 0 [rad/s] (0 = no limit)");
   if (spec.type == DcMotorType::kSeparatelyExcited)
     rule(positive(spec.field_current_a), "field_current_a", spec.field_current_a,
          "a separately excited motor needs its field current", "I_f > 0 [A]");
@@ -73,16 +80,18 @@ DcMotor::DcMotor(const DcMotorSpec& spec) : spec_(spec) {
   p.ThrowIfAny();
   if (spec.rated_current_a > 0 && BaseSpeed() <= 0)
     p.Add({"", 0, "rated_current_a", std::to_string(spec.rated_current_a),
-           "I_r R_a reaches the supply voltage: no base speed",
-           "I_r < E / R_a [A]"});
+           "I_r R_a reaches the supply voltage: no base speed", "I_r < E / R_a [A]"});
   p.ThrowIfAny();
 }
 
 double DcMotor::FieldCurrent() const {
   switch (spec_.type) {
-    case DcMotorType::kSeparatelyExcited: return spec_.field_current_a;
-    case DcMotorType::kShunt: return spec_.supply_voltage_v / spec_.field_resistance_ohm;
-    default: return 0.0;
+    case DcMotorType::kSeparatelyExcited:
+      return spec_.field_current_a;
+    case DcMotorType::kShunt:
+      return spec_.supply_voltage_v / spec_.field_resistance_ohm;
+    default:
+      return 0.0;
   }
 }
 
@@ -144,12 +153,14 @@ SpeedRegion DcMotor::Region(double w) const {
 double DcMotor::TorqueLimit(double w) const {
   if (spec_.rated_current_a <= 0) return kInf;
   switch (Region(w)) {
-    case SpeedRegion::kConstantTorque: return RatedTorque();
+    case SpeedRegion::kConstantTorque:
+      return RatedTorque();
     case SpeedRegion::kConstantPower:
       // No field to weaken in a permanent-magnet motor: nothing above the base speed.
       if (spec_.type == DcMotorType::kPermanentMagnet) return 0.0;
       return RatedTorque() * BaseSpeed() / std::abs(w);
-    case SpeedRegion::kBeyondMaximum: return 0.0;
+    case SpeedRegion::kBeyondMaximum:
+      return 0.0;
   }
   return 0.0;
 }
@@ -159,7 +170,8 @@ MotorOperatingPoint SolveOperatingPoint(const DcMotor& motor, const MotorLoad& l
       !std::isfinite(load.train_value) || !(load.torque_nm >= 0) || !(load.viscous_nm_s >= 0))
     throw InputError(InputProblem{"", 0, "load", "",
                                   "needs T_0 >= 0, c >= 0, a nonzero train value and "
-                                  "0 < efficiency <= 1", "a valid MotorLoad"});
+                                  "0 < efficiency <= 1",
+                                  "a valid MotorLoad"});
   const double i = std::abs(load.train_value);
   // Load torque seen at the motor shaft at motor speed w (w >= 0).
   auto reflected = [&](double w) {
@@ -168,9 +180,9 @@ MotorOperatingPoint SolveOperatingPoint(const DcMotor& motor, const MotorLoad& l
   MotorOperatingPoint op;
   auto fill = [&](double w) {
     op.motor_speed_rad_s = w;
-    op.armature_current_a = w == 0 ? motor.spec().supply_voltage_v /
-                                         motor.spec().armature_resistance_ohm
-                                   : motor.CurrentAtSpeed(w);
+    op.armature_current_a =
+        w == 0 ? motor.spec().supply_voltage_v / motor.spec().armature_resistance_ohm
+               : motor.CurrentAtSpeed(w);
     op.motor_torque_nm = motor.TorqueAtCurrent(op.armature_current_a);
     op.field_current_a = motor.FieldCurrent();
     op.input_power_w = motor.InputPower(op.armature_current_a);

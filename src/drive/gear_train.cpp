@@ -20,8 +20,8 @@ struct Row {
   std::vector<std::pair<int, double>> coeffs;
   double rhs = 0.0;
   bool input = false;
-  int member = -1;     // input rows: the member
-  std::string label;   // for messages
+  int member = -1;    // input rows: the member
+  std::string label;  // for messages
 };
 
 std::string Num(double x) {
@@ -40,7 +40,9 @@ class TrainBuilder {
  public:
   explicit TrainBuilder(const GearTrainSpec& spec) : spec_(spec) {}
 
-  void Problem(const std::string& where, const std::string& field, std::string rule,
+  void Problem(const std::string& where,
+               const std::string& field,
+               std::string rule,
                std::string allowed) {
     problems_.Add({"", 0, where.empty() ? field : where + "." + field, "", std::move(rule),
                    std::move(allowed)});
@@ -122,10 +124,10 @@ class TrainBuilder {
                        "a pinion on a fixed axis");
       double m = a.module_m;
       if (b.module_m > 0 && m > 0 && std::abs(b.module_m - m) > 1e-9 * m)
-        return Problem(mesh.where, "b",
-                       "rack module " + Num(b.module_m) + " m differs from the pinion's " +
-                           Num(m) + " m",
-                       "equal modules (a rack meshes only with its own module)");
+        return Problem(
+            mesh.where, "b",
+            "rack module " + Num(b.module_m) + " m differs from the pinion's " + Num(m) + " m",
+            "equal modules (a rack meshes only with its own module)");
       if (m <= 0) m = b.module_m;
       if (m <= 0)
         return Problem(a.where, "module_m", "the pinion of rack " + b.name + " needs a module",
@@ -147,8 +149,10 @@ class TrainBuilder {
       case MeshKind::kInternal: {
         s = 1.0;
         if (a.teeth == b.teeth)
-          return Problem(mesh.where, "b", "an internal pair needs a ring with more teeth than "
-                         "its pinion; both have " + std::to_string(a.teeth),
+          return Problem(mesh.where, "b",
+                         "an internal pair needs a ring with more teeth than "
+                         "its pinion; both have " +
+                             std::to_string(a.teeth),
                          "z_ring > z_pinion");
         break;
       }
@@ -158,7 +162,8 @@ class TrainBuilder {
                          "a gear with worm_hand = \"right\" or \"left\" (teeth = starts)");
         s = a.worm_hand == WormHand::kRight ? 1.0 : -1.0;
         break;
-      case MeshKind::kRack: break;
+      case MeshKind::kRack:
+        break;
     }
     if (mesh.kind != MeshKind::kWorm) {
       for (const TrainMember* g : {&a, &b})
@@ -190,9 +195,12 @@ class TrainBuilder {
       if (m.shaft.empty() || m.kind == MemberKind::kRack) continue;
       const auto [it, fresh] = first.emplace(m.shaft, i);
       if (!fresh)
-        rows_.push_back({{{i, 1.0}, {it->second, -1.0}}, 0.0, false, -1,
-                         "shaft " + m.shaft + " (" + spec_.members[it->second].name + " = " +
-                             m.name + ")"});
+        rows_.push_back(
+            {{{i, 1.0}, {it->second, -1.0}},
+             0.0,
+             false,
+             -1,
+             "shaft " + m.shaft + " (" + spec_.members[it->second].name + " = " + m.name + ")"});
     }
   }
 
@@ -200,8 +208,8 @@ class TrainBuilder {
     for (int i = 0; i < static_cast<int>(spec_.members.size()); ++i) {
       const TrainMember& m = spec_.members[i];
       if (!m.speed || !std::isfinite(*m.speed)) continue;
-      rows_.push_back({{{i, 1.0}}, *m.speed, true, i,
-                       (*m.speed == 0.0 ? "held " : "input ") + m.name});
+      rows_.push_back(
+          {{{i, 1.0}}, *m.speed, true, i, (*m.speed == 0.0 ? "held " : "input ") + m.name});
     }
   }
 
@@ -241,8 +249,7 @@ class TrainBuilder {
       const int new_rank = static_cast<int>(lu.rank());
       if (new_rank == rank && rows_[r].input) {
         const TrainMember& m = spec_.members[rows_[r].member];
-        const Eigen::VectorXd w =
-            a.topRows(r).completeOrthogonalDecomposition().solve(b.head(r));
+        const Eigen::VectorXd w = a.topRows(r).completeOrthogonalDecomposition().solve(b.head(r));
         const double implied = w(rows_[r].member);
         const bool same = std::abs(implied - rows_[r].rhs) <= 1e-9 * (1 + std::abs(implied));
         Problem(m.where, "speed",
@@ -283,7 +290,8 @@ class TrainBuilder {
     s.rank = rank;
     s.residual = rows ? (a * w - b).cwiseAbs().maxCoeff() / (1.0 + w.cwiseAbs().maxCoeff()) : 0;
     const int in = spec_.Index(spec_.input), out = spec_.Index(spec_.output);
-    if (in >= 0 && out >= 0 && std::abs(s.speed[in]) > 0) s.train_value = s.speed[out] / s.speed[in];
+    if (in >= 0 && out >= 0 && std::abs(s.speed[in]) > 0)
+      s.train_value = s.speed[out] / s.speed[in];
     return s;
   }
 
@@ -297,11 +305,16 @@ class TrainBuilder {
 
 std::string ToString(MeshKind k) {
   switch (k) {
-    case MeshKind::kExternal: return "external";
-    case MeshKind::kInternal: return "internal";
-    case MeshKind::kBevel: return "bevel";
-    case MeshKind::kWorm: return "worm";
-    case MeshKind::kRack: return "rack";
+    case MeshKind::kExternal:
+      return "external";
+    case MeshKind::kInternal:
+      return "internal";
+    case MeshKind::kBevel:
+      return "bevel";
+    case MeshKind::kWorm:
+      return "worm";
+    case MeshKind::kRack:
+      return "rack";
   }
   return "?";
 }

@@ -31,8 +31,7 @@ std::vector<KeySpec> MotorKeys() {
                         "(series); permanent magnet: E_b = K_w w [V s/rad]"),
                "1.2"),
       Real("torque_constant", "N m/A", "0.0",
-           "K_a of T = K_a I_a (series: T = K_a I_a^2 [N m/A^2]); 0 = lossless, from K_w",
-           0.0),
+           "K_a of T = K_a I_a (series: T = K_a I_a^2 [N m/A^2]); 0 = lossless, from K_w", 0.0),
       Positive("field_current_a", "A", "", "field current I_f (separately_excited only)"),
       Positive("field_resistance_ohm", "Ohm", "",
                "shunt field resistance R_f, I_f = E / R_f (shunt only)"),
@@ -49,8 +48,8 @@ std::vector<KeySpec> MotorKeys() {
 std::optional<DcMotorSpec> ReadMotorSection(Document& doc, const std::string& section) {
   if (Rejected(doc, section)) return std::nullopt;
   DcMotorSpec s;
-  s.type = DcMotorTypeFromString(doc.String(section, "type"))
-               .value_or(DcMotorType::kPermanentMagnet);
+  s.type =
+      DcMotorTypeFromString(doc.String(section, "type")).value_or(DcMotorType::kPermanentMagnet);
   s.supply_voltage_v = doc.Real(section, "supply_voltage_v");
   s.armature_resistance_ohm = doc.Real(section, "armature_resistance_ohm");
   s.speed_constant = doc.Real(section, "speed_constant");
@@ -86,9 +85,12 @@ std::optional<DcMotorSpec> ReadMotorSection(Document& doc, const std::string& se
   } catch (const InputError& e) {
     for (const auto& p : e.problems()) {
       const std::string key = p.key == "max_speed_rad_s" ? "max_speed_rpm" : p.key;
-      doc.Problem(section, doc.Given(section, key) || p.key == "field_current_a" ||
-                                   p.key == "field_resistance_ohm" ? key : "type",
-                  p.rule, p.allowed);
+      doc.Problem(
+          section,
+          doc.Given(section, key) || p.key == "field_current_a" || p.key == "field_resistance_ohm"
+              ? key
+              : "type",
+          p.rule, p.allowed);
     }
     return std::nullopt;
   }
@@ -104,7 +106,8 @@ std::vector<KeySpec> CaseMotorKeys() {
   return keys;
 }
 
-std::optional<double> MotorPinionSpeed(Document& doc, const std::string& section,
+std::optional<double> MotorPinionSpeed(Document& doc,
+                                       const std::string& section,
                                        double pinion_torque_nm) {
   const std::optional<DcMotorSpec> spec = ReadMotorSection(doc, section);
   if (!spec) return std::nullopt;
@@ -116,16 +119,20 @@ std::optional<double> MotorPinionSpeed(Document& doc, const std::string& section
   if (const auto w = MotorSpeedCommand(doc, section)) {
     const ControlledPoint c = SolveControlledPoint(motor, load, *w);
     if (!c.feasible) {
-      doc.Problem(section, "speed_command_rpm", "the drive cannot carry the pinion torque at "
-                  "this speed: " + c.message, "a speed and load inside the motor's envelope");
+      doc.Problem(section, "speed_command_rpm",
+                  "the drive cannot carry the pinion torque at "
+                  "this speed: " +
+                      c.message,
+                  "a speed and load inside the motor's envelope");
       return std::nullopt;
     }
     return load.train_value * *w;
   }
   const MotorOperatingPoint op = SolveOperatingPoint(motor, load);
   if (!op.usable() || op.motor_speed_rad_s <= 0) {
-    doc.Problem(section, "type", "no running operating point against the pinion torque: " +
-                op.message, "a motor whose torque-speed line meets the load");
+    doc.Problem(section, "type",
+                "no running operating point against the pinion torque: " + op.message,
+                "a motor whose torque-speed line meets the load");
     return std::nullopt;
   }
   return load.train_value * op.motor_speed_rad_s;

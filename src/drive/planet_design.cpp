@@ -24,8 +24,8 @@ PlanetRules CheckPlanetRules(const PlanetarySet& set) {
     p.Add({"", 0, "planet_teeth", std::to_string(*set.planet_teeth), "must be >= 1",
            "an integer >= 1"});
   if (!(set.addendum_coefficient > 0 && set.addendum_coefficient < 2))
-    p.Add({"", 0, "addendum_coefficient", std::to_string(set.addendum_coefficient),
-           "out of range", "0 < h_a* < 2 (standard 1)"});
+    p.Add({"", 0, "addendum_coefficient", std::to_string(set.addendum_coefficient), "out of range",
+           "0 < h_a* < 2 (standard 1)"});
   p.ThrowIfAny();
 
   PlanetRules r;

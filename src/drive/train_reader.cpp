@@ -26,39 +26,46 @@ std::vector<KeySpec> SpeedKeys(bool rack) {
 }
 
 SectionSpec GearSection(const std::string& name) {
-  SectionSpec s{"gear." + name, "a gear (spur, helical, bevel, ring, worm wheel or worm)", false,
-                {Required(Integer("teeth", "-", "", "number of teeth; a worm: thread starts", 1.0,
-                                  100000.0),
-                          "30"),
-                 Positive("module_m", "m", "", "module (needed by a rack's pinion)"),
-                 Text("worm_hand", "", "makes the gear a worm of this hand", {"right", "left"}),
-                 Text("shaft", "\"\"", "shaft name: members on one shaft turn together"),
-                 Text("carrier", "\"\"", "carrier (arm) its axis rides on; \"\" = the frame")}};
+  SectionSpec s{
+      "gear." + name,
+      "a gear (spur, helical, bevel, ring, worm wheel or worm)",
+      false,
+      {Required(Integer("teeth", "-", "", "number of teeth; a worm: thread starts", 1.0, 100000.0),
+                "30"),
+       Positive("module_m", "m", "", "module (needed by a rack's pinion)"),
+       Text("worm_hand", "", "makes the gear a worm of this hand", {"right", "left"}),
+       Text("shaft", "\"\"", "shaft name: members on one shaft turn together"),
+       Text("carrier", "\"\"", "carrier (arm) its axis rides on; \"\" = the frame")}};
   for (auto& k : SpeedKeys(false)) s.keys.push_back(k);
   return s;
 }
 
 SectionSpec CarrierSection(const std::string& name) {
-  SectionSpec s{"carrier." + name, "a carrier (arm) of an epicyclic train", false,
-                {Text("shaft", "\"\"", "shaft name: members on one shaft turn together"),
-                 Integer("planets", "-", "", "equally spaced planets (design rules checked)", 1.0,
-                         1000.0),
-                 Real("addendum_coefficient", "-", "1.0",
-                      "planet addendum / module, for the tip clearance rule", 0.0, 2.0, false,
-                      false)}};
+  SectionSpec s{
+      "carrier." + name,
+      "a carrier (arm) of an epicyclic train",
+      false,
+      {Text("shaft", "\"\"", "shaft name: members on one shaft turn together"),
+       Integer("planets", "-", "", "equally spaced planets (design rules checked)", 1.0, 1000.0),
+       Real("addendum_coefficient", "-", "1.0",
+            "planet addendum / module, for the tip clearance rule", 0.0, 2.0, false, false)}};
   for (auto& k : SpeedKeys(false)) s.keys.push_back(k);
   return s;
 }
 
 SectionSpec RackSection(const std::string& name) {
-  SectionSpec s{"rack." + name, "a rack meshing with a pinion", false,
+  SectionSpec s{"rack." + name,
+                "a rack meshing with a pinion",
+                false,
                 {Positive("module_m", "m", "", "module of the rack (= its pinion's)")}};
   for (auto& k : SpeedKeys(true)) s.keys.push_back(k);
   return s;
 }
 
 SectionSpec MeshSection(const std::string& name) {
-  return {"mesh." + name, "a mesh between two members", false,
+  return {"mesh." + name,
+          "a mesh between two members",
+          false,
           {Required(Text("a", "", "first gear (a worm; a rack's pinion)"), "\"A\""),
            Required(Text("b", "", "second gear (a worm wheel; a rack)"), "\"B\""),
            Text("kind", "\"external\"", "kind of mesh",
@@ -73,7 +80,9 @@ Schema BuildSchema(const std::map<std::string, std::vector<std::string>>& names)
   Schema s;
   s.kind = "train";
   s.sections.push_back(
-      {"train", "the train and which members the train value relates", false,
+      {"train",
+       "the train and which members the train value relates",
+       false,
        {Text("name", "\"\"", "title shown in the report"),
         Text("input", "\"\"", "input member of the train value w_output / w_input"),
         Text("output", "\"\"", "output member of the train value")}});
@@ -90,7 +99,8 @@ Schema BuildSchema(const std::map<std::string, std::vector<std::string>>& names)
   SectionSpec motor{"motor", "a DC motor driving the train's input member", false, MotorKeys()};
   s.sections.push_back(motor);
   s.sections.push_back(
-      {"load", "the load on a member driven by the motor: T = torque_nm + viscous_nm_s |w|",
+      {"load",
+       "the load on a member driven by the motor: T = torque_nm + viscous_nm_s |w|",
        false,
        {Text("member", "\"\"", "loaded member; \"\" = the train's output"),
         Real("torque_nm", "N m", "0.0", "constant load torque", 0.0),
@@ -176,8 +186,10 @@ class TrainReader {
       const bool declared = doc_.Given(sec, "planets");
       if (!found) {
         if (declared)
-          doc_.Problem(sec, "planets", "no simple planetary set (sun, planet, ring) on this "
-                       "carrier to check", "planets only for a carrier with a sun-planet "
+          doc_.Problem(sec, "planets",
+                       "no simple planetary set (sun, planet, ring) on this "
+                       "carrier to check",
+                       "planets only for a carrier with a sun-planet "
                        "external mesh and a planet-ring internal mesh");
         continue;
       }
@@ -186,8 +198,8 @@ class TrainReader {
         found->rules = CheckPlanetRules(found->set);
       } catch (const InputError& e) {
         for (const auto& p : e.problems())
-          doc_.Problem("gear." + (p.key == "sun_teeth" ? found->sun : found->ring), "teeth",
-                       p.rule, p.allowed);
+          doc_.Problem("gear." + (p.key == "sun_teeth" ? found->sun : found->ring), "teeth", p.rule,
+                       p.allowed);
         continue;
       }
       if (declared) {
@@ -195,11 +207,11 @@ class TrainReader {
         found->planets = n;
         const PlanetRules& r = found->rules;
         if (!r.Assembles(n))
-          doc_.Problem(sec, "planets",
-                       "cannot be equally spaced: (z_sun + z_ring)/N = " +
-                           std::to_string(r.total_teeth) + "/" + std::to_string(n) +
-                           " is not an integer (seed 001 eq. 2.12)",
-                       "a divisor of " + std::to_string(r.total_teeth));
+          doc_.Problem(
+              sec, "planets",
+              "cannot be equally spaced: (z_sun + z_ring)/N = " + std::to_string(r.total_teeth) +
+                  "/" + std::to_string(n) + " is not an integer (seed 001 eq. 2.12)",
+              "a divisor of " + std::to_string(r.total_teeth));
         if (!r.Clears(n))
           doc_.Problem(sec, "planets",
                        "adjacent planet tips would touch: N must be < " +
@@ -218,10 +230,10 @@ class TrainReader {
     int given = doc_.Bool(sec, "held") ? 1 : 0;
     for (const char* k : keys) given += doc_.Given(sec, k);
     if (given > 1) {
-      doc_.Problem(sec, doc_.Bool(sec, "held") ? "held" : keys.back(),
-                   "a member is driven at one speed or held, not both",
-                   rack ? "one of speed_m_s, held = true"
-                        : "one of speed_rpm, speed_rad_s, held = true");
+      doc_.Problem(
+          sec, doc_.Bool(sec, "held") ? "held" : keys.back(),
+          "a member is driven at one speed or held, not both",
+          rack ? "one of speed_m_s, held = true" : "one of speed_rpm, speed_rad_s, held = true");
       return std::nullopt;
     }
     if (doc_.Bool(sec, "held")) return 0.0;
@@ -238,15 +250,17 @@ class TrainReader {
     TrainMember m;
     m.name = name;
     m.where = sec;
-    m.kind = group == "gear" ? MemberKind::kGear
-             : group == "carrier" ? MemberKind::kCarrier : MemberKind::kRack;
+    m.kind = group == "gear"      ? MemberKind::kGear
+             : group == "carrier" ? MemberKind::kCarrier
+                                  : MemberKind::kRack;
     m.speed = Speed(sec, m.kind == MemberKind::kRack);
     if (m.kind == MemberKind::kGear) {
       m.teeth = static_cast<int>(doc_.Int(sec, "teeth"));
       if (!doc_.Has(sec, "teeth")) m.teeth = 1;  // reported by the schema; keep solving quiet
       const std::string hand = doc_.String(sec, "worm_hand");
-      m.worm_hand = hand == "right" ? WormHand::kRight
-                    : hand == "left" ? WormHand::kLeft : WormHand::kNone;
+      m.worm_hand = hand == "right"  ? WormHand::kRight
+                    : hand == "left" ? WormHand::kLeft
+                                     : WormHand::kNone;
       m.carrier = doc_.String(sec, "carrier");
     }
     if (m.kind != MemberKind::kCarrier) m.module_m = doc_.Real(sec, "module_m");
@@ -289,8 +303,10 @@ class TrainReader {
       return;
     }
     if (input.empty() || out_.spec.Index(input) < 0) {
-      doc_.Problem("train", "input", "the motor drives the train's input member, which is "
-                   "missing or unknown", "input = the name of the member the motor drives");
+      doc_.Problem("train", "input",
+                   "the motor drives the train's input member, which is "
+                   "missing or unknown",
+                   "input = the name of the member the motor drives");
       return;
     }
     const int loaded = out_.spec.Index(out_.load_member);
@@ -302,8 +318,11 @@ class TrainReader {
                    "the rack's pinion, with the rack force times its pitch radius as torque");
     for (const TrainMember& m : out_.spec.members) {
       if (m.name == input && m.speed)
-        doc_.Problem(m.where, "speed_rpm", "the motor gives the speed of " + input + " (speed "
-                     "given twice)", "no speed on the member the motor drives");
+        doc_.Problem(m.where, "speed_rpm",
+                     "the motor gives the speed of " + input +
+                         " (speed "
+                         "given twice)",
+                     "no speed on the member the motor drives");
       else if (m.speed && *m.speed != 0.0)
         doc_.Problem(m.where, doc_.Given(m.where, "speed_rad_s") ? "speed_rad_s" : "speed_rpm",
                      "with a motor the only other inputs are held members",

@@ -48,20 +48,20 @@ class DcMotor {
   explicit DcMotor(const DcMotorSpec& spec);  // validates; throws InputError (keys = fields)
   const DcMotorSpec& spec() const { return spec_; }
 
-  double FieldCurrent() const;         // I_f; 0 for permanent magnet and series [A]
-  double Flux() const;                 // K_w I_f or K_w (not series) [V s/rad]
-  double TorqueConstant() const;       // K_a as used [N m/A] or [N m/A^2]
-  double SpeedAtCurrent(double armature_current_a) const;    // (3.1.1) / corrected (3.1.3)
-  double TorqueAtCurrent(double armature_current_a) const;   // (3.1.2) / (3.1.4) [N m]
-  double CurrentAtSpeed(double speed_rad_s) const;           // inverse of SpeedAtCurrent [A]
-  double TorqueAtSpeed(double speed_rad_s) const;            // the torque-speed line [N m]
-  double NoLoadSpeed() const;          // T = 0; +infinity for series [rad/s]
-  double StallTorque() const;          // at w = 0, I_a = E / R_a [N m]
-  double InputPower(double armature_current_a) const;  // E I_a (+ E I_f for shunt) [W]
+  double FieldCurrent() const;    // I_f; 0 for permanent magnet and series [A]
+  double Flux() const;            // K_w I_f or K_w (not series) [V s/rad]
+  double TorqueConstant() const;  // K_a as used [N m/A] or [N m/A^2]
+  double SpeedAtCurrent(double armature_current_a) const;   // (3.1.1) / corrected (3.1.3)
+  double TorqueAtCurrent(double armature_current_a) const;  // (3.1.2) / (3.1.4) [N m]
+  double CurrentAtSpeed(double speed_rad_s) const;          // inverse of SpeedAtCurrent [A]
+  double TorqueAtSpeed(double speed_rad_s) const;           // the torque-speed line [N m]
+  double NoLoadSpeed() const;                               // T = 0; +infinity for series [rad/s]
+  double StallTorque() const;                               // at w = 0, I_a = E / R_a [N m]
+  double InputPower(double armature_current_a) const;       // E I_a (+ E I_f for shunt) [W]
 
   // Speed-control envelope; all 0 without rated_current_a.
-  double BaseSpeed() const;            // w_b [rad/s]
-  double RatedTorque() const;          // K_a I_r (series K_a I_r^2) [N m]
+  double BaseSpeed() const;                      // w_b [rad/s]
+  double RatedTorque() const;                    // K_a I_r (series K_a I_r^2) [N m]
   double TorqueLimit(double speed_rad_s) const;  // T_max(w): constant torque, then P_r / w
   SpeedRegion Region(double speed_rad_s) const;
 
@@ -73,26 +73,26 @@ class DcMotor {
 // through the train value i = w_L / w_m and the train efficiency eta (motor drives):
 // T_L,motor = T_L |i| / eta.
 struct MotorLoad {
-  double torque_nm = 0;          // T_0 [N m]
-  double viscous_nm_s = 0;       // c [N m s/rad]
-  double train_value = 1;        // i = w_L / w_m [-], nonzero
-  double efficiency = 1;         // eta in (0, 1] [-]
+  double torque_nm = 0;     // T_0 [N m]
+  double viscous_nm_s = 0;  // c [N m s/rad]
+  double train_value = 1;   // i = w_L / w_m [-], nonzero
+  double efficiency = 1;    // eta in (0, 1] [-]
 };
 
 struct MotorOperatingPoint {
   enum class Termination { kRunning, kStalled, kRunaway };
   Termination termination = Termination::kRunning;
   std::string message;
-  double motor_speed_rad_s = 0;    // [rad/s]
-  double motor_torque_nm = 0;      // developed torque [N m]
-  double armature_current_a = 0;   // [A]
-  double field_current_a = 0;      // [A]
-  double input_power_w = 0;        // electrical [W]
-  double shaft_power_w = 0;        // T_m w_m [W]
-  double load_speed_rad_s = 0;     // w_L = i w_m [rad/s]
-  double load_torque_nm = 0;       // T_L at w_L [N m]
-  double load_power_w = 0;         // T_L |w_L| [W]
-  bool within_envelope = true;     // T_m <= TorqueLimit(w_m) (true without an envelope)
+  double motor_speed_rad_s = 0;   // [rad/s]
+  double motor_torque_nm = 0;     // developed torque [N m]
+  double armature_current_a = 0;  // [A]
+  double field_current_a = 0;     // [A]
+  double input_power_w = 0;       // electrical [W]
+  double shaft_power_w = 0;       // T_m w_m [W]
+  double load_speed_rad_s = 0;    // w_L = i w_m [rad/s]
+  double load_torque_nm = 0;      // T_L at w_L [N m]
+  double load_power_w = 0;        // T_L |w_L| [W]
+  bool within_envelope = true;    // T_m <= TorqueLimit(w_m) (true without an envelope)
   bool usable() const { return termination == Termination::kRunning; }
 };
 
@@ -113,7 +113,8 @@ struct ControlledPoint {
   bool feasible = true;           // I_a <= I_r and the region is reachable
   std::string message;
 };
-ControlledPoint SolveControlledPoint(const DcMotor& motor, const MotorLoad& load,
+ControlledPoint SolveControlledPoint(const DcMotor& motor,
+                                     const MotorLoad& load,
                                      double speed_rad_s);
 
 }  // namespace tehl

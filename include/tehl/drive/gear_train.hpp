@@ -41,19 +41,19 @@ std::string ToString(MemberKind k);  // "gear", "carrier", "rack"
 // One moving member of the train: a gear (spur, helical, bevel, ring, worm or worm wheel),
 // a carrier (arm) or a rack.
 struct TrainMember {
-  std::string name;                     // unique over all members
+  std::string name;  // unique over all members
   MemberKind kind = MemberKind::kGear;
-  int teeth = 0;                        // gear teeth, or thread starts of a worm [-]
-  double module_m = 0.0;                // module; 0 = not given (needed for racks, planets) [m]
-  WormHand worm_hand = WormHand::kNone; // kNone: not a worm
-  std::string shaft;                    // members with the same non-empty shaft turn together
-  std::string carrier;                  // gears only: carrier their axis rides on; "" = frame
-  std::optional<double> speed;          // driven speed [rad/s] (rack: [m/s]); 0 = held
-  std::string where;                    // section for messages, e.g. "gear.A"; may be ""
+  int teeth = 0;                         // gear teeth, or thread starts of a worm [-]
+  double module_m = 0.0;                 // module; 0 = not given (needed for racks, planets) [m]
+  WormHand worm_hand = WormHand::kNone;  // kNone: not a worm
+  std::string shaft;                     // members with the same non-empty shaft turn together
+  std::string carrier;                   // gears only: carrier their axis rides on; "" = frame
+  std::optional<double> speed;           // driven speed [rad/s] (rack: [m/s]); 0 = held
+  std::string where;                     // section for messages, e.g. "gear.A"; may be ""
 };
 
 struct TrainMesh {
-  std::string a, b;               // member names; a worm or a rack's pinion is a
+  std::string a, b;  // member names; a worm or a rack's pinion is a
   MeshKind kind = MeshKind::kExternal;
   bool bevel_same_sense = false;  // bevel only: s = +1 instead of -1
   std::string where;              // section for messages, e.g. "mesh.AB"

@@ -16,22 +16,22 @@
 namespace tehl {
 
 struct PlanetarySet {
-  int sun_teeth = 0;                 // z_s [-]
-  int ring_teeth = 0;                // z_r [-], > z_s + 2
-  std::optional<int> planet_teeth;   // z_p as made; absent = standard, (z_r - z_s)/2 [-]
-  double addendum_coefficient = 1.0; // h_a* = addendum / module [-]
+  int sun_teeth = 0;                  // z_s [-]
+  int ring_teeth = 0;                 // z_r [-], > z_s + 2
+  std::optional<int> planet_teeth;    // z_p as made; absent = standard, (z_r - z_s)/2 [-]
+  double addendum_coefficient = 1.0;  // h_a* = addendum / module [-]
 };
 
 struct PlanetRules {
-  double coaxial_planet_teeth = 0;   // (z_r - z_s)/2, eq. (2.14) [-]
-  bool coaxial = true;               // the planet as made satisfies (2.14)
-  double clearance_limit = 0;        // 180 deg / asin[(z_p + 2 h_a*)/(z_s + z_p)] [-]
-  int max_by_clearance = 0;          // largest N strictly below clearance_limit [-]
-  std::vector<int> equally_spaced;   // N <= max_by_clearance dividing z_s + z_r, ascending
-  int max_planets = 0;               // the largest of equally_spaced [-]
-  int total_teeth = 0;               // z_s + z_r [-]
-  bool Assembles(int n) const;       // (z_s + z_r)/n is an integer
-  bool Clears(int n) const;          // n <= max_by_clearance
+  double coaxial_planet_teeth = 0;  // (z_r - z_s)/2, eq. (2.14) [-]
+  bool coaxial = true;              // the planet as made satisfies (2.14)
+  double clearance_limit = 0;       // 180 deg / asin[(z_p + 2 h_a*)/(z_s + z_p)] [-]
+  int max_by_clearance = 0;         // largest N strictly below clearance_limit [-]
+  std::vector<int> equally_spaced;  // N <= max_by_clearance dividing z_s + z_r, ascending
+  int max_planets = 0;              // the largest of equally_spaced [-]
+  int total_teeth = 0;              // z_s + z_r [-]
+  bool Assembles(int n) const;      // (z_s + z_r)/n is an integer
+  bool Clears(int n) const;         // n <= max_by_clearance
 };
 
 // Throws InputError (keys sun_teeth, ring_teeth, planet_teeth, addendum_coefficient) for a

@@ -13,8 +13,7 @@
 namespace tehl {
 namespace {
 
-TrainMember Gear(const std::string& name, int z, std::string shaft = "",
-                 std::string carrier = "") {
+TrainMember Gear(const std::string& name, int z, std::string shaft = "", std::string carrier = "") {
   TrainMember m;
   m.name = name;
   m.teeth = z;
@@ -45,7 +44,7 @@ double Speed(const GearTrainSpec& s, const TrainSolution& r, const std::string& 
 // Document: w_A / w_F = -20/3, w_F = -240 rpm (opposite to A).
 TEST(GearTrain, Seed001Example21CompoundTrainGivesMinus240Rpm) {
   GearTrainSpec s;
-  s.members = {Gear("A", 30), Gear("B", 50, "BC"), Gear("C", 20, "BC"),
+  s.members = {Gear("A", 30),       Gear("B", 50, "BC"), Gear("C", 20, "BC"),
                Gear("D", 40, "DE"), Gear("E", 18, "DE"), Gear("F", 36)};
   s.members[0].speed = 1600.0;
   s.meshes = {Mesh("A", "B"), Mesh("C", "D"), Mesh("E", "F")};
@@ -74,9 +73,9 @@ TEST(GearTrain, Seed001Example22IdlersOnlySetTheDirection) {
 // The signs of bevel and worm stages are conventions: the magnitudes are the test.
 TEST(GearTrain, Seed001Example23BevelSpurWormRackGivesRackAt766MetresPerMinute) {
   GearTrainSpec s;
-  s.members = {Gear("1", 60),      Gear("2", 48, "s2"), Gear("3", 80, "s2"), Gear("4", 120, "s4"),
-               Gear("5", 60, "s4"), Gear("6", 40, "s6"), Gear("7", 2, "s6"),  Gear("8", 80, "s8"),
-               Gear("9", 65, "s8")};
+  s.members = {Gear("1", 60),        Gear("2", 48, "s2"), Gear("3", 80, "s2"),
+               Gear("4", 120, "s4"), Gear("5", 60, "s4"), Gear("6", 40, "s6"),
+               Gear("7", 2, "s6"),   Gear("8", 80, "s8"), Gear("9", 65, "s8")};
   s.members[6].worm_hand = WormHand::kRight;
   s.members[8].module_m = 0.005;
   TrainMember rack;
@@ -91,8 +90,8 @@ TEST(GearTrain, Seed001Example23BevelSpurWormRackGivesRackAt766MetresPerMinute) 
   const TrainSolution r = SolveGearTrain(s);
   EXPECT_NEAR(std::abs(*r.train_value), 0.03125, 1e-12);
   EXPECT_NEAR(std::abs(RadPerSToRpm(Speed(s, r, "9"))), 7.5, 1e-9);
-  EXPECT_NEAR(std::abs(Speed(s, r, "9")) * 60.0, 47.12, 0.005);       // rad/min
-  EXPECT_NEAR(std::abs(Speed(s, r, "10")) * 60.0, 7.66, 0.005);       // m/min
+  EXPECT_NEAR(std::abs(Speed(s, r, "9")) * 60.0, 47.12, 0.005);  // rad/min
+  EXPECT_NEAR(std::abs(Speed(s, r, "10")) * 60.0, 7.66, 0.005);  // m/min
   // A left-hand worm turns the wheel, hence the rack, the other way.
   GearTrainSpec left = s;
   left.members[6].worm_hand = WormHand::kLeft;
@@ -106,16 +105,15 @@ TEST(GearTrain, Seed001Example23BevelSpurWormRackGivesRackAt766MetresPerMinute) 
 // document's roll speeds 39.07 and 56.03 rpm: N2 = 24.90 -> 25, N3 = 19.95 -> 20.
 TEST(GearTrain, Seed001Example24PartialTrainValuesGiveTheSynthesisedTeeth) {
   GearTrainSpec s;
-  s.members = {Gear("1", 16),       Gear("2", 1, "a1"),  Gear("6", 2, "a1"),  Gear("7", 64, "a2"),
-               Gear("8", 26, "a2"), Gear("9", 24),       Gear("3", 1, "b1"),  Gear("4", 14, "b1"),
+  s.members = {Gear("1", 16),       Gear("2", 1, "a1"),  Gear("6", 2, "a1"),   Gear("7", 64, "a2"),
+               Gear("8", 26, "a2"), Gear("9", 24),       Gear("3", 1, "b1"),   Gear("4", 14, "b1"),
                Gear("5", 42, "b2"), Gear("10", 3, "b2"), Gear("11", 50, "b3"), Gear("12", 35, "b3"),
                Gear("13", 18)};
   s.members[2].worm_hand = WormHand::kLeft;
   s.members[9].worm_hand = WormHand::kRight;
   s.members[0].speed = 1.0;
-  s.meshes = {Mesh("1", "2"), Mesh("6", "7", MeshKind::kWorm), Mesh("8", "9"),
-              Mesh("1", "3"), Mesh("4", "5"), Mesh("10", "11", MeshKind::kWorm),
-              Mesh("12", "13")};
+  s.meshes = {Mesh("1", "2"), Mesh("6", "7", MeshKind::kWorm),   Mesh("8", "9"),  Mesh("1", "3"),
+              Mesh("4", "5"), Mesh("10", "11", MeshKind::kWorm), Mesh("12", "13")};
   const TrainSolution r = SolveGearTrain(s);  // N2 = N3 = 1: w1/w9 is the factor itself
   const double factor_a = 1.0 / std::abs(Speed(s, r, "9"));
   const double factor_b = 1.0 / std::abs(Speed(s, r, "13"));
@@ -196,8 +194,13 @@ TEST(GearTrain, Seed001Example27TwoSubTrainsOnOneArmGivePlus5214RadPerS) {
 // test the teeth): w7 = 35 - (2/3)(100 - 35) = -8.33 rad/s.
 TEST(GearTrain, Seed001Example28PrintedTeethGiveMinus833RadPerS) {
   GearTrainSpec s;
-  s.members = {Gear("2", 20), Gear("3", 40, "s4"), Gear("4", 30, "s4"),
-               Gear("5", 60, "p", "A"), Gear("6", 24, "p", "A"), Gear("7", 18), Arm("A")};
+  s.members = {Gear("2", 20),
+               Gear("3", 40, "s4"),
+               Gear("4", 30, "s4"),
+               Gear("5", 60, "p", "A"),
+               Gear("6", 24, "p", "A"),
+               Gear("7", 18),
+               Arm("A")};
   s.members[0].speed = -200.0;  // shaft B turns against A: w4 = +100 (same sense as A)
   s.members[6].speed = 35.0;
   s.meshes = {Mesh("2", "3"), Mesh("4", "5", MeshKind::kBevel), Mesh("6", "7", MeshKind::kBevel)};
@@ -306,8 +309,8 @@ TEST(GearTrain, LockedTriangleOfExternalGearsRejectsItsInput) {
 
 TEST(GearTrain, RejectsMeshesThatCannotExist) {
   GearTrainSpec s;
-  s.members = {Gear("A", 20), Gear("B", 20), Arm("X"), Arm("Y"), Gear("P", 10, "", "X"),
-               Gear("Q", 10, "", "Y")};
+  s.members = {Gear("A", 20), Gear("B", 20),          Arm("X"),
+               Arm("Y"),      Gear("P", 10, "", "X"), Gear("Q", 10, "", "Y")};
   s.members[0].speed = 1.0;
   s.meshes = {Mesh("A", "Z"), Mesh("A", "B", MeshKind::kInternal), Mesh("P", "Q"),
               Mesh("A", "B", MeshKind::kWorm), Mesh("A", "B", MeshKind::kRack)};

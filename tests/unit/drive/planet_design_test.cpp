@@ -51,7 +51,7 @@ TEST(PlanetRules, HandCheckedSmallSet) {
   EXPECT_NEAR(r.clearance_limit, 7.634, 0.001);
   EXPECT_EQ(r.max_by_clearance, 7);
   EXPECT_EQ(r.equally_spaced, (std::vector<int>{1, 2, 3, 4, 5, 6}));
-  EXPECT_TRUE(r.Assembles(12));   // 60/12 = 5, though 12 planets do not clear
+  EXPECT_TRUE(r.Assembles(12));  // 60/12 = 5, though 12 planets do not clear
   EXPECT_FALSE(r.Clears(12));
   EXPECT_FALSE(r.Assembles(7));
   const PlanetRules low = CheckPlanetRules({20, 40, std::nullopt, 0.8});

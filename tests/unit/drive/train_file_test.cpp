@@ -138,10 +138,9 @@ TEST(TrainCommand, PrintsSpeedsTrainValueAndTabulation) {
 TEST(TrainCommand, EveryShippedTrainFileRuns) {
   for (const char* name :
        {"seed001_ex2_1_compound", "seed001_ex2_2_idlers", "seed001_ex2_3_bevel_worm_rack",
-        "seed001_ex2_4_two_rolls", "seed001_ex2_6_seed002_planetary",
-        "seed001_ex2_7_two_subtrains", "seed001_ex2_8_bevel_differential",
-        "seed001_ex2_9_fixed_sun", "seed001_ex2_11_planetary_reducer", "reverted",
-        "motor_hoist"}) {
+        "seed001_ex2_4_two_rolls", "seed001_ex2_6_seed002_planetary", "seed001_ex2_7_two_subtrains",
+        "seed001_ex2_8_bevel_differential", "seed001_ex2_9_fixed_sun",
+        "seed001_ex2_11_planetary_reducer", "reverted", "motor_hoist"}) {
     const auto r = testing::RunTehl("train '" + Case(name) + "'");
     ASSERT_TRUE(r.exited) << name;
     EXPECT_EQ(r.exit_code, 0) << name << "\n" << r.err;
@@ -163,8 +162,8 @@ std::string Problems(const std::string& text) {
 }
 
 TEST(TrainFile, UnderDeterminedTrainIsReportedAtAMemberLine) {
-  const std::string m = Problems(
-      "[gear.A]\nteeth = 20\n[gear.B]\nteeth = 40\n[mesh.AB]\na = \"A\"\nb = \"B\"\n");
+  const std::string m =
+      Problems("[gear.A]\nteeth = 20\n[gear.B]\nteeth = 40\n[mesh.AB]\na = \"A\"\nb = \"B\"\n");
   EXPECT_NE(m.find("F:1: [gear.A]: under-determined"), std::string::npos) << m;
 }
 
