@@ -67,6 +67,21 @@ Document ReadCaseDocument(const std::string& path) {
       doc.Problem("operating", "power_w",
                   loads ? "give the load once, not twice" : "the transmitted load is missing",
                   "exactly one of power_w, pinion_torque_nm");
+    // A length in millimetres where metres are due passes every range: it shows as a face
+    // width of a sliver of a module, or of thousands of modules. Spur gears have b/m from
+    // about 3 (FZG type C: 14 mm / 4.5 mm) to about 40 (wide industrial gears).
+    if (doc.Given("gear", "module_m") && doc.Given("gear", "face_width_m")) {
+      const double b_m = doc.Real("gear", "face_width_m") / doc.Real("gear", "module_m");
+      if (b_m < 0.2)
+        doc.Problem("gear", "module_m",
+                    "the face width is " + FormatReal(b_m) + " modules: a module in millimetres?",
+                    "module_m in metres (2 mm = 0.002), at most 5 face widths");
+      else if (b_m > 200.0)
+        doc.Problem("gear", "face_width_m",
+                    "the face width is " + FormatReal(b_m) +
+                        " modules: a face width in millimetres?",
+                    "face_width_m in metres (25 mm = 0.025), at most 200 modules");
+    }
   } else if (doc.HasSection("motor")) {
     doc.Problem("motor", "", "[motor] drives the pinion of a gear pair",
                 "a [gear] case, or no [motor]");
