@@ -1,14 +1,20 @@
 #!/usr/bin/python3
 """Figures of a tehl study (index.h5 of `tehl sweep`, layout in docs/studies.md) as PNG files.
 
-    plot_study.py INDEX.h5 [-o DIR]
+    plot_study.py INDEX.h5 [-o DIR] [--prefix P] [--dpi D] [--table]
 
 writes
-  study_path_<q>.png       one curve per scene of q = h_min, h_c, p_max, T_max, mu along the
+  P_path_<q>.png           one curve per scene of q = h_min, h_c, p_max, T_max, mu along the
                            path of contact (s), from each scene's result /cycle
-  study_<label>.png        the summary quantities (h_min min, h_c at C, p_max max, T_max max,
-                           mu mean) against each numeric varied parameter
-Quantities a result does not hold (T_max, mu before the thermal model) are left out.
+  P_path.png               h_min, p_max, T_max and mu along the path in one 2 x 2 figure
+                           (the layout of seed 004 Figs. 9-10, 13-16, 19-22, 25-28)
+  P_<label>.png            the summary quantities (h_min min, h_c at C, p_max max, T_max max,
+                           mu mean) against each varied parameter
+P is "study" unless --prefix is given. Parameters that take one value in every scene (a key a
+study only overrides, e.g. the grid) and zip parameters that repeat an earlier one scene by
+scene get no summary figure. --table prints the index as a Markdown table (varied values,
+summaries in um, GPa, K) instead of drawing.
+Quantities a result does not hold (T_max, mu of an isothermal run) are left out.
 Exit codes: 0 done, 2 the file is missing or not a study index.
 """
 import argparse
@@ -39,18 +45,68 @@ def text(x):
     return x.decode() if isinstance(x, bytes) else str(x)
 
 
+def value_text(v):
+    if isinstance(v, (bytes, str)):
+        return text(v)
+    return f"{v:g}"
+
+
 def scene_label(index, row, labels):
-    parts = []
+    return ", ".join(f"{lab} = {value_text(index['parameters'][lab][row])}" for lab in labels)
+
+
+def shown_labels(index, labels):
+    """The varied parameters that tell scenes apart: not constant, not a repeat of another."""
+    shown, seen = [], []
     for lab in labels:
-        v = index["parameters"][lab][row]
-        parts.append(f"{lab} = {text(v) if not np.issubdtype(type(v), np.number) else f'{v:g}'}")
-    return ", ".join(parts)
+        values = [value_text(v) for v in index["parameters"][lab][:]]
+        if len(set(values)) < 2 or values in seen:
+            continue
+        seen.append(values)
+        shown.append(lab)
+    return shown
+
+
+def read_cycles(results):
+    cycles = []
+    for row, path in enumerate(results):
+        if not path or not os.path.isfile(path):
+            continue
+        with h5py.File(path, "r") as r:
+            cycles.append((row, {k: r["cycle"][k][:] for k in r["cycle"].keys() if k != "zone"}))
+    return cycles
+
+
+def draw_path(ax, cycles, q, scale, label_of):
+    for row, c in cycles:
+        if q in c:
+            ax.plot(c["s"] * 1e3, c[q] * scale, lw=1.1, label=label_of(row))
+    ax.grid(alpha=0.3)
+
+
+def print_table(f, labels, status):
+    cols = [("h_min_min", "min h_min [um]", 1e6, "{:.4f}"), ("h_c_pitch", "h_c at C [um]", 1e6,
+                                                              "{:.4f}"),
+            ("p_max_max", "max p_max [GPa]", 1e-9, "{:.4f}"),
+            ("T_max_max", "max T_max [K]", 1.0, "{:.1f}"), ("mu_mean", "mean mu", 1.0, "{:.4f}"),
+            ("mu_max", "max mu", 1.0, "{:.4f}"), ("wall_time", "wall [s]", 1.0, "{:.0f}")]
+    head = ["scene"] + labels + [c[1] for c in cols] + ["steps", "status"]
+    print("| " + " | ".join(head) + " |")
+    print("|" + "---|" * len(head))
+    for row in range(len(status)):
+        cells = [str(row)] + [value_text(f["parameters"][lab][row]) for lab in labels]
+        cells += [fmt.format(f["summary"][k][row] * sc) for k, _, sc, fmt in cols]
+        cells += [str(f["steps"][row]), status[row]]
+        print("| " + " | ".join(cells) + " |")
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("index")
     ap.add_argument("-o", "--output-dir", default=None)
+    ap.add_argument("--prefix", default="study")
+    ap.add_argument("--dpi", type=int, default=120)
+    ap.add_argument("--table", action="store_true")
     a = ap.parse_args()
     if not os.path.isfile(a.index):
         fail(f"{a.index}: no such file")
@@ -60,67 +116,87 @@ def main():
         fail(f"{a.index}: not an HDF5 file ({e})")
     if "summary" not in f or "parameters" not in f or "status" not in f:
         fail(f"{a.index}: no /summary, /parameters or /status: not a tehl study index")
+    all_labels = [text(x) for x in f["parameter_labels"][:]]
+    labels = shown_labels(f, all_labels) or all_labels[:1]
+    status = [text(x) for x in f["status"][:]]
+    if a.table:
+        print_table(f, labels, status)
+        return
     out = a.output_dir or os.path.dirname(os.path.abspath(a.index))
     os.makedirs(out, exist_ok=True)
-    labels = [text(x) for x in f["parameter_labels"][:]]
-    status = [text(x) for x in f["status"][:]]
-    results = [text(x) for x in f["result"][:]]
+    # Result paths are absolute or relative to the working directory of the sweep; fall back
+    # to the index's scenes/ folder when the study was moved.
+    base = os.path.dirname(os.path.abspath(a.index))
+    results = []
+    for x in f["result"][:]:
+        path = text(x)
+        if path and not os.path.isfile(path):
+            moved = os.path.join(base, "scenes", os.path.basename(path))
+            path = moved if os.path.isfile(moved) else path
+        results.append(path)
     written = []
 
+    def label_of(row):
+        return scene_label(f, row, labels) + ("" if status[row] == "ok" else f" ({status[row]})")
+
+    def save(fig, name):
+        path = os.path.join(out, f"{a.prefix}_{name}.png")
+        fig.tight_layout()
+        fig.savefig(path, dpi=a.dpi)
+        plt.close(fig)
+        written.append(path)
+
     # Quantities along the path, one curve per scene (mesh-cycle studies only).
-    if f.attrs.get("kind", b"") in (b"mesh_cycle", "mesh_cycle"):
-        cycles = []
-        for row, path in enumerate(results):
-            if not path or not os.path.isfile(path):
-                continue
-            with h5py.File(path, "r") as r:
-                cycles.append((row, {k: r["cycle"][k][:] for k in r["cycle"].keys()
-                                     if k != "zone"}))
+    if text(f.attrs.get("kind", b"")) == "mesh_cycle":
+        cycles = read_cycles(results)
+        xlabel = "s, distance from A along the line of action [mm]"
         for q, ylabel, scale in PATH_QUANTITIES:
             if not any(q in c for _, c in cycles):
                 continue
             fig, ax = plt.subplots(figsize=(7, 4.5))
-            for row, c in cycles:
-                if q in c:
-                    ax.plot(c["s"] * 1e3, c[q] * scale, lw=1.2,
-                            label=scene_label(f, row, labels) +
-                            ("" if status[row] == "ok" else f" ({status[row]})"))
-            ax.set_xlabel("s, distance from A along the line of action [mm]")
+            draw_path(ax, cycles, q, scale, label_of)
+            ax.set_xlabel(xlabel)
             ax.set_ylabel(ylabel)
-            ax.grid(alpha=0.3)
             ax.legend(fontsize=7)
-            name = os.path.join(out, f"study_path_{q}.png")
-            fig.tight_layout()
-            fig.savefig(name, dpi=120)
-            plt.close(fig)
-            written.append(name)
+            save(fig, f"path_{q}")
+        panels = [p for p in PATH_QUANTITIES if p[0] in ("h_min", "p_max", "T_max", "mu") and
+                  any(p[0] in c for _, c in cycles)]
+        if panels:
+            fig, axes = plt.subplots(2, 2, figsize=(9, 6), sharex=True, squeeze=False)
+            for ax, (q, ylabel, scale) in zip(axes.flat, panels):
+                draw_path(ax, cycles, q, scale, label_of)
+                ax.set_ylabel(ylabel)
+            for ax in axes.flat[len(panels):]:
+                ax.set_visible(False)
+            for ax in axes[-1, :]:
+                ax.set_xlabel(xlabel, fontsize=8)
+            axes[0, 0].legend(fontsize=7)
+            fig.suptitle(text(f.attrs.get("name", b"")), fontsize=10)
+            save(fig, "path")
 
-    # Summary quantities against each numeric parameter.
+    # Summary quantities against each varied parameter.
     ok = np.array([s == "ok" for s in status])
+    quantities = [(k, yl, sc) for k, yl, sc in SUMMARY if np.any(f["summary"][k][:] != 0)]
     for lab in labels:
         x = f["parameters"][lab][:]
         if not np.issubdtype(x.dtype, np.number):
+            ticks = [value_text(v) for v in x]
             x = np.arange(len(x))
-            ticks = [text(v) for v in f["parameters"][lab][:]]
         else:
             ticks = None
-        quantities = [(k, yl, sc) for k, yl, sc in SUMMARY if np.any(f["summary"][k][:] != 0)]
-        fig, axes = plt.subplots(len(quantities), 1, figsize=(6, 2.2 * len(quantities)),
+        fig, axes = plt.subplots(len(quantities), 1, figsize=(5, 1.6 * len(quantities) + 0.6),
                                  sharex=True, squeeze=False)
         for ax, (k, ylabel, scale) in zip(axes[:, 0], quantities):
             y = f["summary"][k][:] * scale
             ax.plot(x[ok], y[ok], "o-", lw=1.2)
             ax.set_ylabel(ylabel, fontsize=8)
+            ax.tick_params(labelsize=8)
             ax.grid(alpha=0.3)
-        unit = f["parameters"][lab].attrs.get("unit", b"")
-        axes[-1, 0].set_xlabel(f"{lab} [{text(unit)}]" if ticks is None else lab)
+        unit = text(f["parameters"][lab].attrs.get("unit", b""))
+        axes[-1, 0].set_xlabel(f"{lab} [{unit}]" if ticks is None else lab)
         if ticks is not None:
             axes[-1, 0].set_xticks(x, ticks)
-        name = os.path.join(out, f"study_{lab.replace('/', '_').replace('.', '_')}.png")
-        fig.tight_layout()
-        fig.savefig(name, dpi=120)
-        plt.close(fig)
-        written.append(name)
+        save(fig, lab.replace("/", "_").replace(".", "_"))
     for w in written:
         print(w)
 

@@ -1,0 +1,441 @@
+#!/usr/bin/python3
+"""Accuracy against run time of tehl: writes docs/accuracy.md and docs/accuracy_pareto.png.
+
+    accuracy_report.py --tehl PATH [--scratch DIR] [--jobs N] [--docs DIR] [--reuse]
+
+Runs (scenes expanded and checked by `tehl sweep --dry-run`, each run by `tehl run` in its
+own process, N at a time):
+  - the seed 004 SAE 40 mesh cycle, thermal with the Ree-Eyring film
+    (cases/seed004_sae40.toml), one setting at a time around a base (257 nodes, 11 film
+    nodes, 80 steps, Newton tolerance 1e-8): grid N, film_nodes Nz, steps, newton_tolerance;
+  - a steady thermal Ree-Eyring disc (cases/disc_steady.toml with sliding, SRR 0.4), the
+    series N, Nz and newton_tolerance;
+  - the cost of each effect on the cycle (129 nodes, 80 steps): isothermal, rigid, steady,
+    rough, Ree-Eyring against the thermal elastic transient smooth Newtonian base.
+The error of each quantity is relative to the finest converged run of its series (the
+reference); for
+the grid series the observed order and a Richardson estimate of the reference's own error are
+given from the three finest grids. Times: the result file's wall_time (mesh cycle) and the
+CPU time (user + system) of the process from wait4; on a loaded machine the CPU time is the
+stable measure, so the Pareto plot and the relative costs use it.
+--reuse reads results of an earlier run from the scratch folder instead of running again.
+"""
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+import matplotlib
+
+matplotlib.use("Agg")
+import h5py  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+QUANTITIES = [("h_min", "h_min"), ("h_c", "h_c"), ("p_max", "p_max"), ("T_max", "T_max"),
+              ("mu", "mu")]
+
+CYCLE_BASE = {"effects.thermal": "true", "effects.non_newtonian": "true",
+              "numerics.grid_points": "257",
+              "numerics.film_nodes": "11", "numerics.steps": "80",
+              "numerics.newton_tolerance": "1e-8"}
+DISC_BASE = {"contact.speed_1_m_s": "1.2", "contact.speed_2_m_s": "0.8",
+             "effects.thermal": "true", "effects.non_newtonian": "true",
+             "numerics.grid_points": "257", "numerics.film_nodes": "11",
+             "numerics.newton_tolerance": "1e-8"}
+SERIES = {
+    "cycle": [("N", "numerics.grid_points", ["129", "257", "513", "1025"]),
+              ("Nz", "numerics.film_nodes", ["5", "7", "11", "21"]),
+              ("steps", "numerics.steps", ["40", "80", "150", "300"]),
+              ("tol", "numerics.newton_tolerance", ["1e-4", "1e-6", "1e-8", "1e-10"])],
+    "disc": [("N", "numerics.grid_points", ["129", "257", "513", "1025"]),
+             ("Nz", "numerics.film_nodes", ["5", "7", "11", "21"]),
+             ("tol", "numerics.newton_tolerance", ["1e-4", "1e-6", "1e-8", "1e-10"])],
+}
+EFFECT_BASE = {"effects.thermal": "true", "numerics.grid_points": "129",
+               "numerics.steps": "80"}
+EFFECTS = [("base: thermal, elastic, transient, smooth, Newtonian", {}),
+           ("isothermal", {"effects.thermal": "false"}),
+           ("rigid", {"effects.elastic": "false"}),
+           ("steady (no squeeze term)", {"effects.transient": "false"}),
+           ("rough (0.1 um, 50 um; steps raised by the roughness rule)",
+            {"effects.roughness": "true", "numerics.steps": "0",
+             "surfaces.surface1.roughness": '"sinusoidal"',
+             "surfaces.surface1.amplitude_m": "1e-7",
+             "surfaces.surface1.wavelength_m": "5e-5",
+             "surfaces.surface2.roughness": '"sinusoidal"',
+             "surfaces.surface2.amplitude_m": "1e-7",
+             "surfaces.surface2.wavelength_m": "5e-5"}),
+           ("Ree-Eyring (non_newtonian, tau0 = 5 MPa)", {"effects.non_newtonian": "true"})]
+
+
+def fail(message):
+    print(f"accuracy_report.py: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def expand(tehl, name, base_case, scenes, scratch):
+    """Writes a zip study of `scenes` (dicts key -> TOML literal) and expands it with
+    `tehl sweep --dry-run`; returns the scene case files."""
+    keys = sorted({k for s in scenes for k in s})
+    folder = os.path.join(scratch, name)
+    os.makedirs(folder, exist_ok=True)
+    lines = [f'[study]\nbase = "{base_case}"\nmode = "zip"\nname = "{name}"\n'
+             f'output = "{folder}"\n']
+    for k in keys:
+        missing = [i for i, s in enumerate(scenes) if k not in s]
+        if missing:
+            fail(f"{name}: key {k} missing in scenes {missing}")
+        lines.append(f'[[vary]]\nkey = "{k}"\nvalues = [{", ".join(s[k] for s in scenes)}]\n')
+    study = os.path.join(folder, "study.toml")
+    with open(study, "w") as f:
+        f.write("\n".join(lines))
+    r = subprocess.run([tehl, "sweep", study, "--dry-run", "-q"], capture_output=True,
+                       text=True)
+    if r.returncode != 0:
+        fail(f"tehl sweep --dry-run {study}:\n{r.stdout}{r.stderr}")
+    return [os.path.join(folder, "scenes", f"scene_{i:04d}.toml") for i in range(len(scenes))]
+
+
+def run_one(tehl, case):
+    """Runs one case in its own process; returns wall and CPU time of the process."""
+    log = case[:-5] + ".log"
+    t0 = time.monotonic()
+    with open(log, "w") as out:
+        p = subprocess.Popen([tehl, "run", case], stdout=out, stderr=subprocess.STDOUT)
+        _, status, usage = os.wait4(p.pid, 0)
+        p.returncode = os.waitstatus_to_exitcode(status)
+    info = {"case": case, "rc": p.returncode, "process_wall_s": time.monotonic() - t0,
+            "cpu_s": usage.ru_utime + usage.ru_stime}
+    with open(case[:-5] + ".json", "w") as f:
+        json.dump(info, f)
+    return info
+
+
+def read_result(info):
+    """Summaries of one run: the seed's quantities and the times."""
+    stem = info["case"][:-5]
+    row = dict(info)
+    h5 = stem + ".h5"
+    if os.path.isfile(h5):
+        with h5py.File(h5, "r") as f:
+            c = f["cycle"]
+            s = c["s"][:]
+            i_c = int(np.argmin(np.abs(s - c.attrs["s_C"])))
+            row["h_min"] = float(np.min(c["h_min"][:]))
+            row["h_c"] = float(c["h_c"][i_c])
+            row["p_max"] = float(np.max(c["p_max"][:]))
+            row["T_max"] = float(np.max(c["T_max"][:])) if "T_max" in c else None
+            row["mu"] = float(np.mean(c["mu"][:])) if "mu" in c else None
+            row["wall_s"] = float(f.attrs["wall_time"])
+            row["steps_run"] = len(s) - 1
+            row["ok"] = str(f.attrs["converged"]) in ("true", "b'true'")
+        return row
+    steps = stem + "_steps.csv"
+    if os.path.isfile(steps):
+        with open(steps) as f:
+            rows = list(csv.DictReader(f))
+        last = rows[-1]
+        row["h_min"] = float(last["h_min_m"])
+        row["h_c"] = float(last["h_c_m"])
+        row["p_max"] = float(last["p_max_pa"])
+        row["T_max"] = float(last["t_max_k"]) if "t_max_k" in last else None
+        row["mu"] = float(last["mu"]) if "mu" in last else None
+        row["wall_s"] = None
+        row["steps_run"] = len(rows) - 1
+        row["ok"] = info["rc"] == 0
+        return row
+    row.update({q: None for q, _ in QUANTITIES})
+    row.update({"wall_s": None, "steps_run": 0, "ok": False})
+    return row
+
+
+def run_all(tehl, cases, jobs, reuse):
+    def one(case):
+        cached = case[:-5] + ".json"
+        if reuse and os.path.isfile(cached):
+            with open(cached) as f:
+                return json.load(f)
+        return run_one(tehl, case)
+
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        infos = list(pool.map(one, cases))
+    return [read_result(i) for i in infos]
+
+
+def rel_error(v, ref):
+    if v is None or ref is None or ref == 0:
+        return None
+    return abs(v - ref) / abs(ref)
+
+
+def pct(e):
+    return "-" if e is None else (f"{100 * e:.2g}" if e >= 1e-4 else "<0.01")
+
+
+def fmt_t(t):
+    return "-" if t is None else f"{t:.1f}"
+
+
+def richardson(values, ratio=2.0):
+    """Observed order and the extrapolated limit from three values on grids refined by
+    `ratio` (coarse to fine): p = log(|f1 - f2| / |f2 - f3|) / log(r)."""
+    f1, f2, f3 = values
+    if None in values or f2 == f3 or f1 == f2 or (f1 - f2) * (f2 - f3) <= 0:
+        return None, None
+    p = np.log(abs(f1 - f2) / abs(f2 - f3)) / np.log(ratio)
+    return p, f3 + (f3 - f2) / (ratio ** p - 1)
+
+
+def reference(rows):
+    """The finest converged run of a series (rows coarse to fine), or None."""
+    ok = [r for r in rows if r["ok"]]
+    return ok[-1] if ok else None
+
+
+def series_tables(case_name, rows_by_series):
+    out = []
+    for label, key, values in SERIES[case_name]:
+        rows = rows_by_series[label]
+        ref = reference(rows)
+        base_cpu = next((r["cpu_s"] for r in rows if r["is_base"]), None)
+        ref_v = values[rows.index(ref)] if ref else "none (no run converged)"
+        out.append(f"\n**{case_name}, {label}** (`{key}`; reference: {label} = {ref_v})\n")
+        out.append("| " + " | ".join([label] + [f"err {q} [%]" for q, _ in QUANTITIES] +
+                                      ["wall [s]", "CPU [s]", "CPU / base", "status"]) + " |")
+        out.append("|" + "---|" * (len(QUANTITIES) + 5))
+        for v, r in zip(values, rows):
+            errs = [("ref" if r is ref else pct(rel_error(r[q], ref[q])) if r["ok"] and ref
+                     else "-") for q, _ in QUANTITIES]
+            rel = "-" if not base_cpu else f"{r['cpu_s'] / base_cpu:.2f}"
+            out.append("| " + " | ".join([v] + errs + [fmt_t(r["wall_s"]), fmt_t(r["cpu_s"]),
+                                                      rel, "ok" if r["ok"] else
+                                                      f"failed (rc {r['rc']})"]) + " |")
+        if label == "N" and len(rows) >= 3 and all(r["ok"] for r in rows[-3:]):
+            notes = []
+            for q, _ in QUANTITIES:
+                p, lim = richardson([r[q] for r in rows[-3:]])
+                if p is not None:
+                    notes.append(f"{q}: order {p:.2f}, reference error "
+                                 f"{pct(rel_error(ref[q], lim))} %")
+                elif ref[q] is not None:
+                    notes.append(f"{q}: not monotone (no Richardson estimate)")
+            out.append("\nRichardson from the three finest grids (ratio 2): " +
+                       "; ".join(notes) + ".\n")
+    return out
+
+
+def cheapest(case_name, rows_by_series, q, target):
+    """The cheapest run of all series of a case whose error in q is within target, error
+    measured against the reference of its own series."""
+    best = None
+    for label, _, values in SERIES[case_name]:
+        rows = rows_by_series[label]
+        ref = reference(rows)
+        if ref is None:
+            continue
+        for v, r in zip(values, rows):
+            e = rel_error(r[q], ref[q]) if r is not ref else 0.0
+            if e is not None and e <= target and r["ok"]:
+                if best is None or r["cpu_s"] < best[2]["cpu_s"]:
+                    best = (label, v, r, e)
+    return best
+
+
+def pareto_plot(data, path):
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
+    markers = {"N": "o", "Nz": "s", "steps": "^", "tol": "D"}
+    for ax, case_name in zip(axes, ["cycle", "disc"]):
+        pts = []
+        for label, _, values in SERIES[case_name]:
+            rows = data[case_name][label]
+            ref = reference(rows)
+            xs, ys = [], []
+            for v, r in zip(values, rows):
+                if ref is None or r is ref:
+                    continue
+                errs = [rel_error(r[q], ref[q]) for q, _ in QUANTITIES]
+                errs = [e for e in errs if e is not None]
+                if not errs or not r["ok"]:
+                    continue
+                e = max(max(errs), 1e-7)
+                xs.append(r["cpu_s"])
+                ys.append(100 * e)
+                pts.append((r["cpu_s"], 100 * e))
+                ax.annotate(v, (r["cpu_s"], 100 * e), fontsize=7, xytext=(3, 3),
+                            textcoords="offset points")
+            ax.plot(xs, ys, markers[label], label=f"{label} (others at base)")
+        pts.sort()
+        front, best = [], np.inf
+        for x, y in pts:
+            if y < best:
+                front.append((x, y))
+                best = y
+        if front:
+            ax.step([p[0] for p in front], [p[1] for p in front], "k--", lw=0.8, where="post",
+                    label="Pareto front")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("CPU time of the run [s]")
+        ax.set_ylabel("largest relative error of h_min, h_c, p_max, T_max, mu [%]")
+        ax.set_title({"cycle": "seed 004 mesh cycle, thermal",
+                      "disc": "steady thermal disc, SRR 0.4"}[case_name], fontsize=9)
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--tehl", default=os.path.join(ROOT, "build", "tehl"))
+    ap.add_argument("--scratch", default=os.path.join(ROOT, "results", "accuracy"))
+    ap.add_argument("--docs", default=os.path.join(ROOT, "docs"))
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--reuse", action="store_true")
+    a = ap.parse_args()
+    tehl = os.path.abspath(a.tehl)
+    if not os.access(tehl, os.X_OK):
+        fail(f"{tehl}: not an executable (build tehl first, or pass --tehl)")
+    scratch = os.path.abspath(a.scratch)
+    os.makedirs(scratch, exist_ok=True)
+    started = time.monotonic()
+    load_before = os.getloadavg()
+
+    # Expand every scene first (so that input problems show before anything runs).
+    plan = []  # (case name, series label, value, is_base, scene file)
+    for case_name, base_case, base in [("cycle", "cases/seed004_sae40.toml", CYCLE_BASE),
+                                       ("disc", "cases/disc_steady.toml", DISC_BASE)]:
+        scenes, meta = [], []
+        for label, key, values in SERIES[case_name]:
+            for v in values:
+                scenes.append(dict(base, **{key: v}))
+                meta.append((case_name, label, v, v == base[key]))
+        files = expand(tehl, f"{case_name}_settings", os.path.join(ROOT, base_case), scenes,
+                       scratch)
+        plan += [m + (f,) for m, f in zip(meta, files)]
+    effect_scenes = []
+    keys = sorted({k for _, d in EFFECTS for k in d} | set(EFFECT_BASE))
+    for _, d in EFFECTS:
+        s = dict(EFFECT_BASE, **d)
+        defaults = {"effects.thermal": "true", "effects.elastic": "true",
+                    "effects.transient": "true", "effects.roughness": "false",
+                    "effects.non_newtonian": "false", "numerics.steps": "80",
+                    "surfaces.surface1.roughness": '"smooth"',
+                    "surfaces.surface1.amplitude_m": "0.0",
+                    "surfaces.surface1.wavelength_m": "5e-5",
+                    "surfaces.surface2.roughness": '"smooth"',
+                    "surfaces.surface2.amplitude_m": "0.0",
+                    "surfaces.surface2.wavelength_m": "5e-5"}
+        effect_scenes.append({k: s.get(k, defaults.get(k)) for k in keys})
+    effect_files = expand(tehl, "effects", os.path.join(ROOT, "cases/seed004_sae40.toml"),
+                          effect_scenes, scratch)
+
+    # Identical settings (the base of each series) are run once.
+    def settings(f):
+        return "".join(x for x in open(f) if "scene_" not in x)
+
+    first_of = {}
+    for p in plan:
+        first_of.setdefault((p[0], settings(p[4])), p[4])
+    to_run = list(dict.fromkeys(first_of.values())) + effect_files
+    print(f"accuracy_report.py: {len(to_run)} runs, {a.jobs} at a time", file=sys.stderr)
+    results = {r["case"]: r for r in run_all(tehl, to_run, a.jobs, a.reuse)}
+
+    data = {"cycle": {}, "disc": {}}
+    for case_name, label, v, is_base, f in plan:
+        r = dict(results[first_of[(case_name, settings(f))]], is_base=is_base, value=v)
+        data[case_name].setdefault(label, []).append(r)
+    effects = [results[f] for f in effect_files]
+    elapsed = time.monotonic() - started
+    load_after = os.getloadavg()
+
+    pareto_plot(data, os.path.join(a.docs, "accuracy_pareto.png"))
+    write_markdown(a, data, effects, elapsed, load_before, load_after)
+
+
+def write_markdown(a, data, effects, elapsed, load_before, load_after):
+    md = []
+    md.append("# Accuracy against run time\n")
+    md.append("Generated by `scripts/accuracy_report.sh` (runs `scripts/accuracy_report.py`; "
+              "scratch results in `results/accuracy/`). Do not edit the tables by hand: "
+              "rerun the script.\n")
+    md.append(f"This run: {elapsed / 60:.1f} min in all, {a.jobs} runs at a time; load "
+              f"average {load_before[0]:.1f} at the start, {load_after[0]:.1f} at the end on "
+              f"a 2-core machine shared with other work. **Wall times are noisy** (a run got "
+              f"a fraction of a core); the CPU time of each run's process (user + system, "
+              f"from wait4) is the stable measure, and the relative costs (CPU / base) are "
+              f"the numbers to carry to another machine.\n")
+    md.append("## What was run\n")
+    md.append("- **cycle**: `cases/seed004_sae40.toml` (seed 004 SAE 40, 10 kW, 1000 rpm) "
+              "with `thermal = true` and the Ree-Eyring film (`non_newtonian = true`, "
+              "tau0 = 5 MPa), the film model of the shipped studies; base 257 nodes, "
+              "`film_nodes` 11, 80 steps, `newton_tolerance` 1e-8. Quantities: min over the "
+              "cycle of h_min, h_c at the pitch point, max of p_max, max of T_max, mean of mu.")
+    md.append("- **disc**: `cases/disc_steady.toml` (steel discs, R = 10 mm, SAE 40, "
+              "100 kN/m, p_H = 0.60 GPa) with sliding (u1 = 1.2, u2 = 0.8 m/s, SRR 0.4), "
+              "thermal and Ree-Eyring, steady; base 257 nodes, 11 film nodes, tolerance 1e-8. "
+              "The [contact] result (`_steps.csv`) has no T_max and mu and no wall_time "
+              "attribute: those columns are '-', the time is the process's.")
+    md.append("- One setting varied at a time, the others at the base. The error is relative "
+              "to the finest converged run of the same series (the reference, 'ref'); a run "
+              "that did not converge has no error ('-'). For the grid the Richardson "
+              "estimate below each table says how far that reference itself is from the grid "
+              "limit. The thermal coupling tolerance (0.01 K) has no case key and is not "
+              "varied.")
+    md.append("- Why the Ree-Eyring film: with the Newtonian film the thermal coupling of "
+              "this version does not converge on the seed 004 cycle at 513 and 1025 nodes or "
+              "with 7 film nodes, nor on the sliding disc (SRR >= 0.1) and the transient disc "
+              "load step; the Newtonian model therefore cannot be refined to a reference "
+              "(docs/studies.md, 'Known problems').\n")
+    md.append("## Settings\n")
+    for case_name in ["cycle", "disc"]:
+        md += series_tables(case_name, data[case_name])
+    md.append("\n![largest error against CPU time](accuracy_pareto.png)\n")
+    md.append("## Recommended settings\n")
+    for case_name in ["cycle", "disc"]:
+        for q in ["h_min", "p_max"]:
+            for target in [0.01, 0.001]:
+                b = cheapest(case_name, data[case_name], q, target)
+                if b:
+                    label, v, r, e = b
+                    md.append(f"- {case_name}: {100 * target:g} % on {q} costs {r['cpu_s']:.1f}"
+                              f" s CPU ({label} = {v}, error {pct(e)} %).")
+    md.append("")
+    md.append("## Cost of each effect\n")
+    md.append("The seed 004 cycle at 129 nodes and 80 steps (the rough run: the steps raised "
+              "so that the roughness moves at most one node per step), each effect switched "
+              "against the thermal, elastic, transient, smooth, Newtonian base. Differences "
+              "are relative to the base run.\n")
+    md.append("| run | steps | h_min [um] | h_c [um] | p_max [GPa] | T_max [K] | mu | "
+              "wall [s] | CPU [s] | CPU / base | status |")
+    md.append("|" + "---|" * 11)
+    base = effects[0]
+    for (name, _), r in zip(EFFECTS, effects):
+        def cell(q, scale, digits):
+            if r.get(q) is None:
+                return "-"
+            d = rel_error(r[q], base[q]) if r is not base and base.get(q) else None
+            return f"{r[q] * scale:.{digits}f}" + (f" ({100 * (r[q] / base[q] - 1):+.0f} %)"
+                                                   if d is not None else "")
+        status = "ok" if r["ok"] else f"failed (rc {r['rc']})"
+        md.append(f"| {name} | {r['steps_run']} | {cell('h_min', 1e6, 3)} | "
+                  f"{cell('h_c', 1e6, 3)} | {cell('p_max', 1e-9, 3)} | {cell('T_max', 1, 1)} |"
+                  f" {cell('mu', 1, 4)} | {fmt_t(r['wall_s'])} | {fmt_t(r['cpu_s'])} | "
+                  f"{r['cpu_s'] / base['cpu_s']:.2f} | {status} |")
+    md.append("")
+    with open(os.path.join(a.docs, "accuracy.md"), "w") as f:
+        f.write("\n".join(md) + "\n")
+    with open(os.path.join(a.scratch, "data.json"), "w") as f:
+        json.dump({"data": data, "effects": effects}, f, indent=1, default=str)
+    print(os.path.join(a.docs, "accuracy.md"))
+
+
+if __name__ == "__main__":
+    main()

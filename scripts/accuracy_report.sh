@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Regenerates docs/accuracy.md and docs/accuracy_pareto.png (accuracy against run time of the
+# seed 004 thermal mesh cycle and a thermal disc; the cost of each effect).
+#
+#   scripts/accuracy_report.sh [--reuse]
+#
+# Environment: TEHL (default build/tehl), JOBS (runs at once, default 2), SCRATCH (default
+# results/accuracy). About 20-30 minutes on a loaded 2-core machine. Needs /usr/bin/python3
+# with matplotlib and h5py (Debian packages).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+exec /usr/bin/python3 scripts/accuracy_report.py --tehl "${TEHL:-build/tehl}" \
+  --jobs "${JOBS:-2}" --scratch "${SCRATCH:-results/accuracy}" --docs docs "$@"
