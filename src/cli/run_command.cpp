@@ -15,13 +15,23 @@ struct RunArgs {
   std::string case_path;
   std::string output_dir;
   bool quiet = false;
+  bool resume = false;
+  int checkpoint_every = 10;
 };
 
 int RunGear(const RunArgs& a) {
   MeshCycleRunOptions o;
   o.quiet = a.quiet;
   o.output_dir = a.output_dir;
+  o.resume = a.resume;
+  o.checkpoint_every = a.checkpoint_every;
   const MeshCycleResult r = RunMeshCycle(a.case_path, o);
+  if (r.already_complete) {
+    std::printf("%s is complete: nothing to resume\n", r.hdf5_path.c_str());
+    return kExitOk;
+  }
+  if (r.resumed_from_step > 0)
+    std::printf("resumed from the checkpoint at step %d\n", r.resumed_from_step);
   const MeshCycleStep& pitch = r.steps[r.PitchStep()];
   std::printf("mesh cycle A..E: %zu of %d steps (%s), grid %zu nodes, %.1f s\n", r.steps.size() - 1,
               r.planned_steps, r.step_rule.c_str(), r.x_m.size(), r.wall_time_s);
@@ -64,6 +74,11 @@ Command AddRunCommand(CLI::App& app) {
   sub->add_option("CASE", args->case_path, "Case file (.toml)")->required();
   sub->add_option("-o,--output-dir", args->output_dir, "Folder for the results ([output])");
   sub->add_flag("-q,--quiet", args->quiet, "No progress line on stderr");
+  sub->add_flag("--resume", args->resume,
+                "Mesh cycle: leave a complete result alone, else continue from its checkpoint");
+  sub->add_option("--checkpoint-every", args->checkpoint_every,
+                  "Mesh cycle: write a checkpoint every N steps (0 = never)")
+      ->check(CLI::NonNegativeNumber);
   return {sub, [args]() {
             // The scene is chosen by the section the file has; each scene reports every
             // problem of its own (a file with neither section is reported by the contact

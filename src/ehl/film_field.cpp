@@ -16,6 +16,8 @@ namespace tehl::internal {
 namespace {
 
 constexpr double kEyringRelaxation = 0.5;
+constexpr double kMaxRiseK = 400.0;  // largest film temperature rise accepted [K]
+constexpr int kHeatingCuts = 8;      // heating scalings tried per energy solve [-]
 
 // Ree-Eyring shear rate with an optional limiting shear stress [1/s].
 struct EyringLaw {
@@ -242,24 +244,48 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
         flow.heating_w_m3(i, j) = tau[j] * tau[j] / eta[j];
       }
     }
+    // Heating limiter: the first energy solve of a sliding contact sees the heating of the
+    // isothermal (cold) viscosity and can heat the film by thousands of kelvin, beyond the
+    // range of the density law. Such a solve is repeated with the heating scaled down (by
+    // 0.3 each time) until the film stays within kMaxRiseK of T0; the limited temperature
+    // is a way station only (the next iteration heats with the warmer, thinner film) and
+    // the coupling cannot settle while a limit was needed.
+    const Eigen::MatrixXd full_heating = flow.heating_w_m3;
     FilmTemperature next = t_;
-    out.summary = energy_->Solve(flow, prev_t, prev_t ? dt_s : 0.0, &next);
-    ++inner_done;
-    energy_time += out.summary.wall_time_s;
-    if (!next.t_k.allFinite()) {
-      out.summary.message = "the energy equation gave a non-finite temperature";
-      return out;
+    double scale = 1.0;
+    for (int attempt = 0;; ++attempt) {
+      next = t_;
+      out.summary = energy_->Solve(flow, prev_t, prev_t ? dt_s : 0.0, &next);
+      ++inner_done;
+      energy_time += out.summary.wall_time_s;
+      const bool sane = next.t_k.allFinite() && out.summary.usable() &&
+                        next.t_k.maxCoeff() < c.temperature_k + kMaxRiseK;
+      if (sane) break;
+      if (attempt >= kHeatingCuts) {
+        if (!next.t_k.allFinite())
+          out.summary.message = "the energy equation gave a non-finite temperature";
+        else if (out.summary.usable())
+          out.summary.message = "the film temperature rises more than " +
+                                std::to_string(kMaxRiseK) + " K even with the heating cut";
+        return out;
+      }
+      scale *= 0.3;
+      flow.heating_w_m3 = scale * full_heating;
     }
-    if (!out.summary.usable()) return out;
+    if (scale < 1.0) {
+      out.limited = true;
+      mixer = AndersonMixer(5);
+      outer_ = AndersonMixer(5);
+    }
     change = (next.t_k - t_.t_k).cwiseAbs().maxCoeff();
     t_.q1_w_m2 = next.q1_w_m2;
     t_.q2_w_m2 = next.q2_w_m2;
-    if (change < inner_tolerance) {
+    if (change < inner_tolerance || out.limited) {
       t_.t_k = next.t_k;
     } else {
       t_.t_k = mixer.Mix(t_.t_k, next.t_k, relaxation)
                    .cwiseMax(0.8 * c.temperature_k)
-                   .cwiseMin(c.temperature_k + 2000.0);
+                   .cwiseMin(c.temperature_k + kMaxRiseK);
     }
     t_.t1_k = t_.t_k.col(0);
     t_.t2_k = t_.t_k.col(nz_ - 1);
@@ -271,10 +297,11 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
   out.max_change_k = (t_.t_k - incoming).cwiseAbs().maxCoeff();
   // The coupling itself, T -> T(p(T)), is a fixed-point iteration too: accelerate it the same
   // way (history kept from Begin on).
-  if (out.max_change_k >= opt_.thermal_tolerance_k) {
+  if (out.limited) out.max_change_k = std::max(out.max_change_k, 10 * opt_.thermal_tolerance_k);
+  if (out.max_change_k >= opt_.thermal_tolerance_k && !out.limited) {
     t_.t_k = outer_.Mix(incoming, t_.t_k, 1.0)
                  .cwiseMax(0.8 * c.temperature_k)
-                 .cwiseMin(c.temperature_k + 2000.0);
+                 .cwiseMin(c.temperature_k + kMaxRiseK);
     t_.t1_k = t_.t_k.col(0);
     t_.t2_k = t_.t_k.col(nz_ - 1);
   }

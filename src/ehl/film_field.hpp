@@ -67,6 +67,7 @@ class FilmField {
     bool ok = false;
     double max_change_k = 0;    // max |T change| over the update (the coupling measure) [K]
     double inner_change_k = 0;  // last change of the fixed-pressure iteration [K]
+    bool limited = false;       // the heating had to be cut (a way station, not a solution)
     FilmEnergySolver::Summary summary;
   };
   // The film temperature at the pressure of a solution: energy solves (steady when

@@ -657,6 +657,17 @@ class LineContactSolver::Impl {
     return sys_.MassFlow(c.um(), s.p_pa);
   }
 
+  TransientHistory SaveTransient() const {
+    return TransientHistory{hist_.levels, hist_.q1, hist_.q2, hist_.dt_prev, hist_.c_prev};
+  }
+  void RestoreTransient(const TransientHistory& h) {
+    hist_.levels = h.levels;
+    hist_.q1 = h.q1;
+    hist_.q2 = h.q2;
+    hist_.dt_prev = h.dt_prev_s;
+    hist_.c_prev = h.c_prev;
+  }
+
   FilmFriction Friction(const ContactConditions& c, const FilmState& st) {
     FilmState s = st;
     Film(c, &s);
@@ -802,6 +813,10 @@ Eigen::VectorXd LineContactSolver::MassFlow(const ContactConditions& c,
                                             const FilmState& s) const {
   return impl_->MassFlow(c, s);
 }
+LineContactSolver::TransientHistory LineContactSolver::SaveTransient() const {
+  return impl_->SaveTransient();
+}
+void LineContactSolver::RestoreTransient(const TransientHistory& h) { impl_->RestoreTransient(h); }
 FilmFriction LineContactSolver::Friction(const ContactConditions& c, const FilmState& s) const {
   return impl_->Friction(c, s);
 }

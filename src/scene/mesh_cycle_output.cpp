@@ -32,6 +32,8 @@ const std::vector<CycleColumn>& CycleColumns() {
        [](const MeshCycleStep& k) { return k.srr; }},
       {"w", "N/m", "load per unit face width on the tracked pair",
        [](const MeshCycleStep& k) { return k.load_n_per_m; }},
+      {"w_static", "N/m", "load of the tracked pair by the static load sharing (= w unless "
+       "dynamic_load is on)", [](const MeshCycleStep& k) { return k.static_load_n_per_m; }},
       {"h_min", "m", "minimum film thickness", [](const MeshCycleStep& k) { return k.h_min_m; }},
       {"h_c", "m", "central film thickness (x = 0)",
        [](const MeshCycleStep& k) { return k.h_c_m; }},
@@ -84,6 +86,7 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
   h5.SetAttribute("/", "converged", r.converged() ? "true" : "false");
   h5.SetAttribute("/", "step_rule", r.step_rule);
   h5.SetAttribute("/", "wall_time", r.wall_time_s, "s");
+  h5.SetAttribute("/", "resumed_from_step", static_cast<double>(r.resumed_from_step), "-");
 
   for (const auto& c : CycleColumns())
     if (!c.thermal || r.thermal)

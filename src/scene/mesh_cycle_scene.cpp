@@ -9,8 +9,10 @@
 #include <filesystem>
 
 #include "scene/case_reader.hpp"
+#include "scene/dynamic_load.hpp"
 #include "scene/film_case.hpp"
 #include "scene/gear_case.hpp"
+#include "scene/mesh_cycle_checkpoint.hpp"
 #include "scene/mesh_cycle_output.hpp"
 #include "tehl/error.hpp"
 #include "tehl/gear/load_sharing.hpp"
@@ -27,7 +29,8 @@ using Clock = std::chrono::steady_clock;
 // below at the switch points B and D (the load arriving there).
 struct PathState {
   ContactPoint contact;
-  double load_n_per_m = 0;
+  double load_n_per_m = 0;         // the film's load (dynamic when dynamic_load is on) [N/m]
+  double static_load_n_per_m = 0;  // the static load sharing [N/m]
 };
 
 class CyclePath {
@@ -52,7 +55,10 @@ class CyclePath {
     const double share = gear_.load_sharing == LoadSharing::kLinear
                              ? LinearLoadShare(path_, q)
                              : StiffnessLoadShare(path_, q, gear_.pair_stiffness);
-    st.load_n_per_m = share * w_nominal_;
+    st.static_load_n_per_m = share * w_nominal_;
+    // [effects] dynamic_load: the tracked pair's load of the periodic torsional response.
+    st.load_n_per_m = st.static_load_n_per_m *
+                      (gear_.dynamic_load ? gear_.dynamic_load->LoadFactorAt(s, left) : 1.0);
     return st;
   }
 
@@ -211,14 +217,21 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
 
   // The result file is open (under its temporary name) for the whole run.
   std::unique_ptr<Hdf5Writer> h5;
-  std::string csv_path;
+  std::string csv_path, checkpoint_path;
   if (ro.write_files) {
     const fs::path dir = ro.output_dir.empty() ? fs::path(doc.String("output", "directory"))
                                                : fs::path(ro.output_dir);
     std::string name = doc.String("output", "name");
     if (name.empty()) name = fs::path(case_path).stem().string();
-    h5 = internal::BeginMeshCycleHdf5((dir / (name + ".h5")).string(), doc, case_path);
+    const std::string final_path = (dir / (name + ".h5")).string();
+    if (ro.resume && fs::exists(final_path)) {  // complete results are never rewritten
+      r.hdf5_path = final_path;
+      r.already_complete = true;
+      return r;
+    }
+    h5 = internal::BeginMeshCycleHdf5(final_path, doc, case_path);
     csv_path = (dir / (name + "_cycle.csv")).string();
+    checkpoint_path = (dir / (name + ".checkpoint")).string();
   }
 
   LineContactSolver solver(grid, e_prime, *film.lubricant, film.effects, film.options,
@@ -245,6 +258,7 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
     k.um_m_s = c.um_m_s;
     k.srr = c.srr;
     k.load_n_per_m = st.load_n_per_m;
+    k.static_load_n_per_m = st.static_load_n_per_m;
     k.pairs_in_contact = c.pairs_in_contact;
     k.h_min_m = state.MinFilm();
     k.h_c_m = state.CentralFilm(grid);
@@ -289,25 +303,76 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
                  tty ? "   " : "\n");
   };
 
-  PathState st = cycle.At(0.0, false);
+  // Resume from a checkpoint of the same case (docs/results.md, "Checkpoints and --resume").
+  const std::uint64_t fingerprint = internal::CaseFingerprint(doc.ToToml());
+  size_t first = 1;
+  double elapsed_before = 0;
+  if (ro.resume && !checkpoint_path.empty()) {
+    std::optional<internal::MeshCycleCheckpoint> ck = internal::ReadCheckpoint(checkpoint_path);
+    if (ck && ck->fingerprint == fingerprint && ck->next_step >= 1 &&
+        static_cast<size_t>(ck->next_step) < s_steps.size() &&
+        ck->result.steps.size() == static_cast<size_t>(ck->next_step) &&
+        ck->state.p_pa.size() == grid.size()) {
+      r.steps = std::move(ck->result.steps);
+      for (auto [to, from] : {std::pair{&r.p_pa, &ck->result.p_pa}, {&r.h_m, &ck->result.h_m},
+                              {&r.t_mid_k, &ck->result.t_mid_k}, {&r.t1_k, &ck->result.t1_k},
+                              {&r.t2_k, &ck->result.t2_k}, {&r.t_field_k, &ck->result.t_field_k}})
+        *to = std::move(*from);
+      state = std::move(ck->state);
+      solver.RestoreTransient(ck->history);
+      first = static_cast<size_t>(ck->next_step);
+      elapsed_before = ck->elapsed_s;
+      r.resumed_from_step = ck->next_step;
+    } else if (!ro.quiet) {
+      std::fprintf(stderr, "no usable checkpoint %s for this case: starting at A\n",
+                   checkpoint_path.c_str());
+    }
+  }
+  auto elapsed = [&] {
+    return elapsed_before + std::chrono::duration<double>(Clock::now() - t_start).count();
+  };
+  PathState st = cycle.At(first == 1 ? 0.0 : s_steps[first - 1], true);
   ContactConditions c = conditions(st);
-  record(st, solver.SolveSteady(c, &state));
+  if (first == 1) {
+    st = cycle.At(0.0, false);
+    c = conditions(st);
+    record(st, solver.SolveSteady(c, &state));
+    if (r.steps.back().summary.usable()) solver.BeginTransient(c, state);
+  }
   if (r.steps.back().summary.usable()) {
-    solver.BeginTransient(c, state);
-    for (size_t k = 1; k < s_steps.size(); ++k) {
+    for (size_t k = first; k < s_steps.size(); ++k) {
       st = cycle.At(s_steps[k], true);
       c = conditions(st);
       const double dt = (s_steps[k] - s_steps[k - 1]) / path.contact_speed_m_s();
       record(st, solver.Step(c, dt, &state));
       if (!r.steps.back().summary.usable()) break;
+      if (!checkpoint_path.empty() && ro.checkpoint_every > 0 && k % ro.checkpoint_every == 0 &&
+          k + 1 < s_steps.size()) {
+        internal::MeshCycleCheckpoint ck;
+        ck.fingerprint = fingerprint;
+        ck.next_step = static_cast<int>(k + 1);
+        ck.elapsed_s = elapsed();
+        ck.result.steps = r.steps;
+        ck.result.p_pa = r.p_pa;
+        ck.result.h_m = r.h_m;
+        ck.result.t_mid_k = r.t_mid_k;
+        ck.result.t1_k = r.t1_k;
+        ck.result.t2_k = r.t2_k;
+        ck.result.t_field_k = r.t_field_k;
+        ck.state = state;
+        ck.history = solver.SaveTransient();
+        internal::WriteCheckpoint(checkpoint_path, ck);
+      }
     }
   }
   if (!ro.quiet && tty) std::fprintf(stderr, "\n");
-  r.wall_time_s = std::chrono::duration<double>(Clock::now() - t_start).count();
+  r.wall_time_s = elapsed();
 
   if (h5) {
     internal::FinishMeshCycleHdf5(*h5, r, doc.Bool("output", "profiles"));
     r.hdf5_path = h5->final_path();
+    std::error_code ignored;
+    fs::remove(checkpoint_path, ignored);  // the result is complete: the checkpoint is spent
     if (doc.Bool("output", "csv")) {
       r.csv_path = csv_path;
       internal::WriteMeshCycleCsv(r.csv_path, r);

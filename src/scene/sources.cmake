@@ -7,6 +7,7 @@ list(APPEND TEHL_SOURCES
   src/scene/gear_case.cpp
   src/scene/dynamic_load.cpp
   src/scene/mesh_cycle_output.cpp
+  src/scene/mesh_cycle_checkpoint.cpp
   src/scene/mesh_cycle_scene.cpp
   src/scene/study_case_text.cpp
   src/scene/study_reader.cpp

@@ -174,6 +174,18 @@ class LineContactSolver {
   void BeginTransient(const ContactConditions& c, const FilmState& initial);
   Summary Step(const ContactConditions& c_new, double dt_s, FilmState* state);
 
+  // The transient history (the stored levels of rho_e h, the last step and conditions), for
+  // checkpoints: a solver restored with RestoreTransient and the state of the same time level
+  // continues as the original would (to the solver tolerance: factorizations are rebuilt).
+  struct TransientHistory {
+    int levels = 0;                // stored levels (0: BeginTransient not called) [-]
+    Eigen::VectorXd q1, q2;        // rho_e h at t_{n-1}, t_{n-2} [kg/m^2]
+    double dt_prev_s = 0;          // t_{n-1} - t_{n-2} [s]
+    ContactConditions c_prev;      // conditions at t_{n-1}
+  };
+  TransientHistory SaveTransient() const;
+  void RestoreTransient(const TransientHistory& h);
+
   // Diagnostics: the scaled steady residual max-norm of a state under conditions c, and
   // the mass flow per unit width q = rho h um - rho h^3/(12 eta) dp/dx between nodes i and
   // i+1 (size n-1) [kg/(m s)]; constant along x for a converged steady film.

@@ -26,6 +26,11 @@ struct MeshCycleRunOptions {
   bool quiet = false;       // no progress line on stderr
   std::string output_dir;   // overrides [output] directory when not empty
   bool write_files = true;  // false: solve only, write nothing (library use, tests)
+  // Checkpoints (only when writing files): every `checkpoint_every` steps the run state goes
+  // to NAME.checkpoint (0 = never). `resume`: a complete NAME.h5 is left as it is
+  // (already_complete); else a checkpoint of the same case is continued.
+  int checkpoint_every = 10;  // [steps]
+  bool resume = false;
 };
 
 struct MeshCycleStep {
@@ -35,7 +40,8 @@ struct MeshCycleStep {
   double u1_m_s = 0, u2_m_s = 0;        // pinion and wheel surface speeds [m/s]
   double um_m_s = 0;                    // entrainment speed (u1 + u2)/2 [m/s]
   double srr = 0;                       // slide-to-roll ratio (u1 - u2)/um [-]
-  double load_n_per_m = 0;              // w of the tracked pair [N/m]
+  double load_n_per_m = 0;              // w of the tracked pair (dynamic_load: dynamic) [N/m]
+  double static_load_n_per_m = 0;       // w of the static load sharing [N/m]
   int pairs_in_contact = 0;             // tooth pairs sharing the load [-]
   double h_min_m = 0, h_c_m = 0;        // minimum and central (x = 0) film [m]
   double p_max_pa = 0;                  // [Pa]
@@ -66,6 +72,8 @@ struct MeshCycleResult {
   std::string step_rule;                        // how the step count was chosen
   double wall_time_s = 0;                       // whole run [s]
   std::string hdf5_path, csv_path;              // written files ("" when not written)
+  int resumed_from_step = 0;                    // first step solved by this run when resumed
+  bool already_complete = false;                // resume found a complete result: no steps
   bool converged() const;                       // every planned step solved and usable
   int PitchStep() const;                        // index of the step nearest to C
 };

@@ -1,0 +1,238 @@
+#include "scene/mesh_cycle_checkpoint.hpp"
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <vector>
+
+namespace tehl::internal {
+namespace {
+
+constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '1'};
+
+// Sequential binary writer / reader of the few types a checkpoint holds.
+class Out {
+ public:
+  void Raw(const void* p, size_t n) {
+    const char* c = static_cast<const char*>(p);
+    buf_.insert(buf_.end(), c, c + n);
+  }
+  void F(double v) { Raw(&v, sizeof v); }
+  void I(std::int64_t v) { Raw(&v, sizeof v); }
+  void S(const std::string& s) {
+    I(static_cast<std::int64_t>(s.size()));
+    Raw(s.data(), s.size());
+  }
+  void V(const double* p, std::int64_t n) {
+    I(n);
+    Raw(p, static_cast<size_t>(n) * sizeof(double));
+  }
+  void V(const Eigen::VectorXd& v) { V(v.data(), v.size()); }
+  void V(const std::vector<double>& v) { V(v.data(), static_cast<std::int64_t>(v.size())); }
+  void M(const Eigen::MatrixXd& m) {
+    I(m.rows());
+    I(m.cols());
+    Raw(m.data(), static_cast<size_t>(m.size()) * sizeof(double));
+  }
+  void VV(const std::vector<std::vector<double>>& v) {
+    I(static_cast<std::int64_t>(v.size()));
+    for (const auto& row : v) V(row);
+  }
+  const std::vector<char>& bytes() const { return buf_; }
+
+ private:
+  std::vector<char> buf_;
+};
+
+class In {
+ public:
+  explicit In(std::vector<char> b) : buf_(std::move(b)) {}
+  void Raw(void* p, size_t n) {
+    if (pos_ + n > buf_.size()) throw std::runtime_error("truncated checkpoint");
+    std::memcpy(p, buf_.data() + pos_, n);
+    pos_ += n;
+  }
+  double F() {
+    double v;
+    Raw(&v, sizeof v);
+    return v;
+  }
+  std::int64_t I() {
+    std::int64_t v;
+    Raw(&v, sizeof v);
+    return v;
+  }
+  std::int64_t Count() {
+    const std::int64_t n = I();
+    if (n < 0 || static_cast<size_t>(n) > buf_.size()) throw std::runtime_error("bad length");
+    return n;
+  }
+  std::string S() {
+    std::string s(static_cast<size_t>(Count()), '\0');
+    Raw(s.data(), s.size());
+    return s;
+  }
+  std::vector<double> V() {
+    std::vector<double> v(static_cast<size_t>(Count()));
+    Raw(v.data(), v.size() * sizeof(double));
+    return v;
+  }
+  Eigen::VectorXd E() {
+    const std::vector<double> v = V();
+    return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+  }
+  Eigen::MatrixXd M() {
+    const std::int64_t r = Count(), c = Count();
+    Eigen::MatrixXd m(r, c);
+    Raw(m.data(), static_cast<size_t>(m.size()) * sizeof(double));
+    return m;
+  }
+  std::vector<std::vector<double>> VV() {
+    std::vector<std::vector<double>> v(static_cast<size_t>(Count()));
+    for (auto& row : v) row = V();
+    return v;
+  }
+  bool done() const { return pos_ == buf_.size(); }
+
+ private:
+  std::vector<char> buf_;
+  size_t pos_ = 0;
+};
+
+void PutConditions(Out& o, const ContactConditions& c) {
+  for (double v : {c.reduced_radius_m, c.u1_m_s, c.u2_m_s, c.load_n_per_m, c.temperature_k}) o.F(v);
+}
+ContactConditions GetConditions(In& in) {
+  ContactConditions c;
+  c.reduced_radius_m = in.F();
+  c.u1_m_s = in.F();
+  c.u2_m_s = in.F();
+  c.load_n_per_m = in.F();
+  c.temperature_k = in.F();
+  return c;
+}
+
+void PutStep(Out& o, const MeshCycleStep& k) {
+  for (double v : {k.s_m, k.time_s, k.reduced_radius_m, k.u1_m_s, k.u2_m_s, k.um_m_s, k.srr,
+                   k.load_n_per_m, k.static_load_n_per_m, k.h_min_m, k.h_c_m, k.p_max_pa, k.t_max_k, k.t_mid_max_k,
+                   k.t1_max_k, k.t2_max_k, k.friction_coefficient, k.c_rt, k.c_ut, k.c_wt})
+    o.F(v);
+  o.I(k.pairs_in_contact);
+  o.S(k.zone);
+  const LineContactSolver::Summary& s = k.summary;
+  o.I(static_cast<int>(s.termination));
+  o.S(s.message);
+  for (int v : {s.iterations, s.total_iterations, s.continuation_stages, s.krylov_iterations,
+                s.substeps, s.coupling_iterations})
+    o.I(v);
+  for (double v : {s.residual, s.load_error, s.wall_time_s, s.temperature_change_k,
+                   s.energy_balance_error})
+    o.F(v);
+  o.S(s.linear_solver);
+}
+
+MeshCycleStep GetStep(In& in) {
+  MeshCycleStep k;
+  for (double* v : {&k.s_m, &k.time_s, &k.reduced_radius_m, &k.u1_m_s, &k.u2_m_s, &k.um_m_s,
+                    &k.srr, &k.load_n_per_m, &k.static_load_n_per_m, &k.h_min_m, &k.h_c_m, &k.p_max_pa, &k.t_max_k,
+                    &k.t_mid_max_k, &k.t1_max_k, &k.t2_max_k, &k.friction_coefficient, &k.c_rt,
+                    &k.c_ut, &k.c_wt})
+    *v = in.F();
+  k.pairs_in_contact = static_cast<int>(in.I());
+  k.zone = in.S();
+  LineContactSolver::Summary& s = k.summary;
+  s.termination = static_cast<LineContactSolver::Termination>(in.I());
+  s.message = in.S();
+  for (int* v : {&s.iterations, &s.total_iterations, &s.continuation_stages,
+                 &s.krylov_iterations, &s.substeps, &s.coupling_iterations})
+    *v = static_cast<int>(in.I());
+  for (double* v : {&s.residual, &s.load_error, &s.wall_time_s, &s.temperature_change_k,
+                    &s.energy_balance_error})
+    *v = in.F();
+  s.linear_solver = in.S();
+  return k;
+}
+
+}  // namespace
+
+std::uint64_t CaseFingerprint(const std::string& text) {
+  // FNV-1a, 64 bit: stable across runs and builds (std::hash is not required to be).
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+void WriteCheckpoint(const std::string& path, const MeshCycleCheckpoint& c) {
+  Out o;
+  o.Raw(kMagic, sizeof kMagic);
+  o.I(static_cast<std::int64_t>(c.fingerprint));
+  o.I(c.next_step);
+  o.F(c.elapsed_s);
+  const MeshCycleResult& r = c.result;
+  o.I(static_cast<std::int64_t>(r.steps.size()));
+  for (const auto& k : r.steps) PutStep(o, k);
+  for (const auto* v : {&r.p_pa, &r.h_m, &r.t_mid_k, &r.t1_k, &r.t2_k, &r.t_field_k}) o.VV(*v);
+  const FilmState& s = c.state;
+  o.V(s.p_pa);
+  o.V(s.h_m);
+  for (double v : {s.h0_m, s.time_s, s.travel1_m, s.travel2_m}) o.F(v);
+  const FilmTemperature& t = s.temperature;
+  o.M(t.t_k);
+  for (const auto* v : {&t.t1_k, &t.t2_k, &t.q1_w_m2, &t.q2_w_m2}) o.V(*v);
+  o.I(c.history.levels);
+  o.V(c.history.q1);
+  o.V(c.history.q2);
+  o.F(c.history.dt_prev_s);
+  PutConditions(o, c.history.c_prev);
+
+  const std::string tmp = path + ".part";
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    f.write(o.bytes().data(), static_cast<std::streamsize>(o.bytes().size()));
+    f.flush();
+    if (!f) throw std::runtime_error("cannot write the checkpoint " + tmp);
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) return std::nullopt;
+  std::vector<char> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  try {
+    In in(std::move(bytes));
+    char magic[8];
+    in.Raw(magic, sizeof magic);
+    if (std::memcmp(magic, kMagic, sizeof magic) != 0) return std::nullopt;
+    MeshCycleCheckpoint c;
+    c.fingerprint = static_cast<std::uint64_t>(in.I());
+    c.next_step = static_cast<int>(in.I());
+    c.elapsed_s = in.F();
+    MeshCycleResult& r = c.result;
+    r.steps.resize(static_cast<size_t>(in.Count()));
+    for (auto& k : r.steps) k = GetStep(in);
+    for (auto* v : {&r.p_pa, &r.h_m, &r.t_mid_k, &r.t1_k, &r.t2_k, &r.t_field_k}) *v = in.VV();
+    FilmState& s = c.state;
+    s.p_pa = in.E();
+    s.h_m = in.E();
+    for (double* v : {&s.h0_m, &s.time_s, &s.travel1_m, &s.travel2_m}) *v = in.F();
+    FilmTemperature& t = s.temperature;
+    t.t_k = in.M();
+    for (auto* v : {&t.t1_k, &t.t2_k, &t.q1_w_m2, &t.q2_w_m2}) *v = in.E();
+    c.history.levels = static_cast<int>(in.I());
+    c.history.q1 = in.E();
+    c.history.q2 = in.E();
+    c.history.dt_prev_s = in.F();
+    c.history.c_prev = GetConditions(in);
+    if (!in.done()) return std::nullopt;
+    return c;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace tehl::internal

@@ -1,0 +1,120 @@
+// Checkpoints of the mesh cycle: a `tehl run` killed with SIGKILL after a checkpoint and rerun
+// with --resume ends with the result of an uninterrupted run (isothermal and thermal), solving
+// only the steps after the checkpoint; a complete result is left alone by --resume.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <thread>
+
+#include "mesh_cycle_runs.hpp"
+
+namespace tehl {
+namespace {
+namespace fs = std::filesystem;
+using testing::ReducedCase;
+using testing::TempDirFor;
+
+MeshCycleResult RunInProcess(const std::string& case_path, const std::string& dir, bool resume) {
+  MeshCycleRunOptions o;
+  o.quiet = true;
+  o.output_dir = dir;
+  o.resume = resume;
+  o.checkpoint_every = 5;
+  return RunMeshCycle(case_path, o);
+}
+
+// Starts `tehl run` as a child and kills it with SIGKILL once its first checkpoint exists.
+void RunAndKillAfterCheckpoint(const std::string& case_path, const std::string& dir) {
+  const std::string checkpoint =
+      dir + "/" + fs::path(case_path).stem().string() + ".checkpoint";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    std::FILE* o = std::freopen("/dev/null", "w", stdout);
+    std::FILE* e = std::freopen("/dev/null", "w", stderr);
+    (void)o;
+    (void)e;
+    execl(TEHL_BINARY, "tehl", "run", case_path.c_str(), "-o", dir.c_str(), "-q",
+          "--checkpoint-every", "5", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(checkpoint) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(fs::exists(checkpoint)) << "no checkpoint appeared";
+  ASSERT_EQ(kill(pid, SIGKILL), 0);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
+}
+
+void ExpectSameCycle(const MeshCycleResult& a, const MeshCycleResult& b) {
+  ASSERT_EQ(a.steps.size(), b.steps.size());
+  // The restored run rebuilds its factorizations, so the two agree to the solver tolerance
+  // (Newton 1e-8, thermal coupling 0.01 K), not bit for bit.
+  for (size_t k = 0; k < a.steps.size(); ++k) {
+    const MeshCycleStep &x = a.steps[k], &y = b.steps[k];
+    EXPECT_EQ(x.s_m, y.s_m) << k;
+    EXPECT_NEAR(x.h_min_m, y.h_min_m, 1e-6 * x.h_min_m) << k;
+    EXPECT_NEAR(x.h_c_m, y.h_c_m, 1e-6 * x.h_c_m) << k;
+    EXPECT_NEAR(x.p_max_pa, y.p_max_pa, 1e-6 * x.p_max_pa) << k;
+    EXPECT_NEAR(x.t_max_k, y.t_max_k, 0.05) << k;
+    EXPECT_NEAR(x.friction_coefficient, y.friction_coefficient,
+                1e-4 * x.friction_coefficient + 1e-9)
+        << k;
+  }
+}
+
+class MeshCycleResume : public ::testing::TestWithParam<bool> {};
+
+TEST_P(MeshCycleResume, KilledRunResumesToTheUninterruptedResult) {
+  const bool thermal = GetParam();
+  const std::string case_path =
+      ReducedCase("seed004_sae40", {{"grid_points", "129"},
+                                    {"steps", "40"},
+                                    {"thermal", thermal ? "true" : "false"}});
+  const std::string ref_dir = TempDirFor("resume_ref"), dir = TempDirFor("resume_killed");
+  const MeshCycleResult ref = RunInProcess(case_path, ref_dir, false);
+  ASSERT_TRUE(ref.converged());
+
+  RunAndKillAfterCheckpoint(case_path, dir);
+  const std::string stem = fs::path(case_path).stem().string();
+  EXPECT_FALSE(fs::exists(dir + "/" + stem + ".h5"));
+  const MeshCycleResult resumed = RunInProcess(case_path, dir, true);
+  ASSERT_TRUE(resumed.converged());
+  EXPECT_GT(resumed.resumed_from_step, 1);  // steps before the checkpoint were not solved again
+  EXPECT_EQ(resumed.resumed_from_step % 5, 1);
+  ExpectSameCycle(ref, resumed);
+  EXPECT_TRUE(fs::exists(dir + "/" + stem + ".h5"));
+  EXPECT_FALSE(fs::exists(dir + "/" + stem + ".checkpoint"));  // spent
+
+  // A complete result is left alone.
+  const auto mtime = fs::last_write_time(dir + "/" + stem + ".h5");
+  const MeshCycleResult again = RunInProcess(case_path, dir, true);
+  EXPECT_TRUE(again.already_complete);
+  EXPECT_EQ(fs::last_write_time(dir + "/" + stem + ".h5"), mtime);
+}
+
+INSTANTIATE_TEST_SUITE_P(IsothermalAndThermal, MeshCycleResume, ::testing::Bool());
+
+// A checkpoint of another case is not used: the run starts at A.
+TEST(MeshCycleResumeGuard, CheckpointOfAnotherCaseIsIgnored) {
+  const std::string dir = TempDirFor("resume_other");
+  const std::string a = ReducedCase("seed004_sae40", {{"grid_points", "129"}, {"steps", "20"}});
+  RunAndKillAfterCheckpoint(a, dir);
+  // The same file name with another load: a different case text.
+  const std::string text = testing::ReadText(a);
+  std::ofstream(a) << std::regex_replace(text, std::regex("power_w = [^\n]*"),
+                                         "power_w = 12000.0");
+  const MeshCycleResult r = RunInProcess(a, dir, true);
+  ASSERT_TRUE(r.converged());
+  EXPECT_EQ(r.resumed_from_step, 0);
+}
+
+}  // namespace
+}  // namespace tehl
