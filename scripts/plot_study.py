@@ -95,7 +95,8 @@ def print_table(f, labels, status):
     print("|" + "---|" * len(head))
     for row in range(len(status)):
         cells = [str(row)] + [value_text(f["parameters"][lab][row]) for lab in labels]
-        cells += [fmt.format(f["summary"][k][row] * sc) for k, _, sc, fmt in cols]
+        cells += [fmt.format(f["summary"][k][row] * sc) if f["summary"][k][row] != 0 else "-"
+                  for k, _, sc, fmt in cols]
         cells += [str(f["steps"][row]), status[row]]
         print("| " + " | ".join(cells) + " |")
 
@@ -168,8 +169,11 @@ def main():
                 ax.set_ylabel(ylabel)
             for ax in axes.flat[len(panels):]:
                 ax.set_visible(False)
-            for ax in axes[-1, :]:
-                ax.set_xlabel(xlabel, fontsize=8)
+            for col in range(2):
+                shown = [ax for ax in axes[:, col] if ax.get_visible()]
+                if shown:
+                    shown[-1].xaxis.set_tick_params(labelbottom=True)
+                    shown[-1].set_xlabel(xlabel, fontsize=8)
             axes[0, 0].legend(fontsize=7)
             fig.suptitle(text(f.attrs.get("name", b"")), fontsize=10)
             save(fig, "path")
