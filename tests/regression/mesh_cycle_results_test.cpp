@@ -28,7 +28,9 @@ using testing::ReducedCase;
 using testing::TempDirFor;
 
 // Dataset path -> unit, from the table of docs/results.md ("| `/a`, `/b` | shape | unit |").
-std::map<std::string, std::string> DocumentedDatasets() {
+// thermal = true: only the rows written by thermal runs ("thermal runs" in the row); false:
+// only the others.
+std::map<std::string, std::string> DocumentedDatasets(bool thermal = false) {
   std::map<std::string, std::string> out;
   std::istringstream doc(ReadText(std::string(TEHL_SOURCE_DIR) + "/docs/results.md"));
   std::string line;
@@ -39,6 +41,7 @@ std::map<std::string, std::string> DocumentedDatasets() {
     if (!std::regex_search(line, m, row) || m[1].str().find("attributes") != std::string::npos)
       continue;
     const std::string cell = m[1].str(), unit = m[3].str();
+    if ((line.find("thermal runs") != std::string::npos) != thermal) continue;
     for (auto it = std::sregex_iterator(cell.begin(), cell.end(), path);
          it != std::sregex_iterator(); ++it)
       out[(*it)[1].str()] = std::regex_replace(unit, std::regex("^ +| +$"), "");
@@ -77,6 +80,9 @@ TEST(MeshCycleResults, FileMatchesDocsResultsMd) {
   ASSERT_FALSE(listed.empty()) << "h5ls -r printed no datasets";
   for (const auto& name : listed) EXPECT_TRUE(documented.count(name)) << name << " undocumented";
   for (const auto& [name, unit] : documented) EXPECT_TRUE(listed.count(name)) << name << " missing";
+  // An isothermal run writes nothing thermal.
+  for (const auto& [name, unit] : DocumentedDatasets(true))
+    EXPECT_FALSE(listed.count(name)) << name << " written by an isothermal run";
 
   // The unit attribute of every dataset is the documented one; 13 steps at 257 nodes.
   const hid_t f = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -99,7 +105,8 @@ TEST(MeshCycleResults, FileMatchesDocsResultsMd) {
   std::string header;
   std::getline(csv, header);
   EXPECT_EQ(header,
-            "s_m,t_s,R_m,u1_m_s,u2_m_s,um_m_s,SRR,w_n_per_m,h_min_m,h_c_m,p_max_pa,C_RT,C_UT,C_WT");
+            "s_m,t_s,R_m,u1_m_s,u2_m_s,um_m_s,SRR,w_n_per_m,w_static_n_per_m,h_min_m,h_c_m,"
+            "p_max_pa,mu,C_RT,C_UT,C_WT");
   int rows = 0;
   while (std::getline(csv, line)) ++rows;
   EXPECT_EQ(rows, 13);
@@ -108,6 +115,43 @@ TEST(MeshCycleResults, FileMatchesDocsResultsMd) {
   const std::string py = Shell("/usr/bin/python3 -c \"import h5py; f = h5py.File('" + h5 +
                                "', 'r'); print(f['cycle/h_c'].attrs['unit'], len(f['cycle/s']))\"");
   EXPECT_EQ(py, "m 13\n");
+}
+
+// A thermal run with the full temperature field adds exactly the thermal rows of
+// docs/results.md, with their units, and the CSV the temperature columns.
+TEST(MeshCycleResults, ThermalFileAddsTheDocumentedTemperatureDatasets) {
+  const std::string dir = TempDirFor("thermal_h5");
+  const std::string case_path =
+      ReducedCase("seed004_sae40", {{"grid_points", "129"}, {"steps", "6"}, {"thermal", "true"}});
+  std::ofstream(case_path, std::ios::app) << "\n[output]\ntemperature_field = true\n";
+  const std::string cmd = std::string("'") + TEHL_BINARY + "' run -q '" + case_path + "' -o '" +
+                          dir + "' > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const std::string stem = fs::path(case_path).stem().string();
+  const std::string h5 = dir + "/" + stem + ".h5";
+  std::set<std::string> listed;
+  std::istringstream ls(Shell("h5ls -r '" + h5 + "'"));
+  std::string line;
+  while (std::getline(ls, line))
+    if (line.find("Dataset") != std::string::npos) listed.insert(line.substr(0, line.find(' ')));
+  std::map<std::string, std::string> all = DocumentedDatasets(false);
+  const std::map<std::string, std::string> thermal = DocumentedDatasets(true);
+  ASSERT_GE(thermal.size(), 10u);
+  all.insert(thermal.begin(), thermal.end());
+  for (const auto& name : listed) EXPECT_TRUE(all.count(name)) << name << " undocumented";
+  for (const auto& [name, unit] : all) EXPECT_TRUE(listed.count(name)) << name << " missing";
+  const hid_t f = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  for (const auto& [name, unit] : thermal)
+    EXPECT_EQ(testing::Hdf5StringAttribute(f, name, "unit"), unit) << name;
+  std::vector<hsize_t> dims;
+  testing::Hdf5Doubles(f, "/profiles/T", &dims);
+  EXPECT_EQ(dims, (std::vector<hsize_t>{7, 129 * 11}));  // 11 film nodes by default
+  H5Fclose(f);
+  std::ifstream csv(dir + "/" + stem + "_cycle.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_NE(header.find(",T_max_k,T_mid_k,T1_max_k,T2_max_k,"), std::string::npos) << header;
 }
 
 TEST(MeshCycleResults, PlotWritesTheThreeFiguresAndRejectsAMissingFile) {
