@@ -152,6 +152,18 @@ void CheckFlow(const FilmFlowField& f, int n, int nz, bool moving, ProblemList* 
                 internal::FormatReal(f.heating_w_m3.minCoeff()), "must be >= 0",
                 "a viscous dissipation >= 0 [W/m^3]"});
   }
+  if (f.heating_decay_1_k.size() || f.heating_reference_t_k.size()) {
+    if (size_rule("FilmFlowField::heating_decay_1_k", f.heating_decay_1_k.rows(),
+                  f.heating_decay_1_k.cols(), nz) &&
+        !(f.heating_decay_1_k.allFinite() && f.heating_decay_1_k.minCoeff() >= 0))
+      bad->Add({"", 0, "FilmFlowField::heating_decay_1_k", "negative or non-finite",
+                "must be finite and >= 0", "a heating decay rate >= 0 [1/K]"});
+    if (size_rule("FilmFlowField::heating_reference_t_k", f.heating_reference_t_k.rows(),
+                  f.heating_reference_t_k.cols(), nz) &&
+        !(f.heating_reference_t_k.allFinite() && f.heating_reference_t_k.minCoeff() > 0))
+      bad->Add({"", 0, "FilmFlowField::heating_reference_t_k", "non-positive or non-finite",
+                "must be finite and > 0", "an absolute temperature > 0 [K]"});
+  }
   if (moving)
     for (auto [key, u] : {std::pair{"FilmFlowField::u1_m_s", f.u1_m_s},
                           std::pair{"FilmFlowField::u2_m_s", f.u2_m_s}})
@@ -234,6 +246,7 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
         drho_dp(i, j) = d.drho_dp;
         linear = linear && d.drho_dT == 0;
       }
+    linear = linear && flow.heating_decay_1_k.size() == 0;
     system.Assemble(in, t->t_k, rho, drho_dt, drho_dp, k);
     bool fresh = false, ok = true;
     auto factorize = [&](bool exact) {

@@ -103,7 +103,8 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
   const double cp = in.cp_j_kgk;
   const bool transient = in.dt_s > 0;
   ComputeMassFluxes(in, t_iter, rho, drho_dt, drho_dp);
-  for (auto* m : {&ap_, &as_, &an_, &aw_, &ae_, &b_, &compression_, &comp_explicit_t_})
+  for (auto* m : {&ap_, &as_, &an_, &aw_, &ae_, &b_, &compression_, &comp_explicit_t_, &heat_,
+                  &heat_slope_, &heat_t_})
     m->setZero(n_, nz_);
   for (int i = 0; i < n_; ++i) {
     const double dxc = source_.CellLength(i);
@@ -147,7 +148,18 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
         ap += cp * mass_(i, j) / in.dt_s;
         b_(i, j) += cp * mass_(i, j) * ((*in.previous_t_k)(i, j) - in.t0_k) / in.dt_s;
       }
-      b_(i, j) += f.heating_w_m3(i, j) * volume_(i, j);
+      // Heating g(T) = H exp(-beta (T - T_ref)), Newton-linearized about the iterate:
+      // g(T_it) (1 - beta (T - T_it)); beta g V on the diagonal keeps it dominant.
+      double g = f.heating_w_m3(i, j), beta = 0;
+      if (f.heating_decay_1_k.size()) {
+        beta = f.heating_decay_1_k(i, j);
+        g *= std::exp(-beta * (t_iter(i, j) - f.heating_reference_t_k(i, j)));
+      }
+      heat_(i, j) = g;
+      heat_slope_(i, j) = beta;
+      heat_t_(i, j) = t_iter(i, j);
+      ap += beta * g * volume_(i, j);
+      b_(i, j) += g * volume_(i, j) * (1 + beta * (t_iter(i, j) - in.t0_k));
       // Compression -(T/rho) drho/dT Dp/Dt = c T: a source lagged where it heats, implicit
       // where it cools (keeps the diagonal dominant).
       const double c = -drho_dt(i, j) / rho(i, j) * (dpdt + f.u_m_s(i, j) * dpdx);
@@ -341,7 +353,8 @@ EnergyBalance FilmEnergySystem::Balance(const FilmEnergyInputs& in,
   for (int i = 0; i < n_; ++i)
     for (int j = 0; j < nz_; ++j) {
       const double theta = t(i, j) - t0;
-      e.shear_w_m += in.flow->heating_w_m3(i, j) * volume_(i, j);
+      e.shear_w_m += heat_(i, j) * (1 - heat_slope_(i, j) * (t(i, j) - heat_t_(i, j))) *
+                     volume_(i, j);
       const double tc = std::isnan(comp_explicit_t_(i, j)) ? t(i, j) : comp_explicit_t_(i, j);
       e.compression_w_m += compression_(i, j) * volume_(i, j) * tc;
       e.stored_w_m += cp * theta * dmass_dt_(i, j);

@@ -74,6 +74,8 @@ class FilmEnergySystem {
   // Coefficients of row (i, j): aP th_ij + aS th_i(j-1) + aN th_i(j+1) + aW th_(i-1)j
   // + aE th_(i+1)j (+ wall flux) = b, th = T - T0; compression c_ij and whether it was implicit.
   Eigen::MatrixXd ap_, as_, an_, aw_, ae_, b_, compression_, comp_explicit_t_;
+  // Heating g at the iterate heat_t_ and its decay rate: the source g (1 - slope (T - heat_t_)).
+  Eigen::MatrixXd heat_, heat_slope_, heat_t_;
   std::vector<int> col_ptr_, row_idx_;
   std::vector<double> values_, rhs_;
   std::vector<char> signature_;  // upwind pattern and wall model of the built matrix

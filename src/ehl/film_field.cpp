@@ -17,7 +17,8 @@ namespace {
 
 constexpr double kEyringRelaxation = 0.5;
 constexpr double kMaxRiseK = 400.0;  // largest film temperature rise accepted [K]
-constexpr int kHeatingCuts = 8;      // heating scalings tried per energy solve [-]
+constexpr int kHeatingCuts = 8;
+constexpr double kMaxStepK = 30.0;  // largest film temperature change per energy solve [K]      // heating scalings tried per energy solve [-]
 
 // Ree-Eyring shear rate with an optional limiting shear stress [1/s].
 struct EyringLaw {
@@ -229,7 +230,9 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
   // nodes: 1 energy solve per coupling iteration needed 270 energy solves in all, an inner
   // loop to convergence 1088 (with 210 instead of 270 pressure solves): one is the default.
   AndersonMixer mixer(5);
-  std::vector<double> eta(nz_), u(nz_), tau(nz_);
+  std::vector<double> eta(nz_), u(nz_), tau(nz_), u_c(nz_), tau_c(nz_), pz(nz_), tz(nz_);
+  std::vector<ViscosityValue> visc(nz_);
+  flow.heating_decay_1_k.resize(n, nz_);
   const double inner_tolerance = 0.1 * opt_.thermal_tolerance_k;
   const int inner_max = inner_iterations_;
   double change = 0, energy_time = 0;
@@ -239,11 +242,29 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
       NodeViscosity(c, s, i, eta.data(), false);
       CrossFilmProfile(eta.data(), nz_, s.h_m[i], slope[i], c.u1_m_s, c.u2_m_s, u.data(),
                        tau.data());
+      // The sliding (Couette) part of the dissipation, tau_c^2 / eta ~ eta (du/h)^2, falls
+      // with the viscosity as the film warms: beta = -d ln eta / dT on the fraction
+      // tau_c^2 / tau^2 of the heating (the pressure-driven part, ~ 1/eta, is left explicit).
+      // Without it, heating from a cold viscosity heats the film by thousands of kelvin and
+      // the next heating, at the overheated film, is far too small.
+      CrossFilmProfile(eta.data(), nz_, s.h_m[i], 0.0, c.u1_m_s, c.u2_m_s, u_c.data(),
+                       tau_c.data());
+      for (int j = 0; j < nz_; ++j) {
+        pz[j] = eff_.piezoviscous ? std::max(s.p_pa[i], 0.0) : 0.0;
+        tz[j] = t_.t_k(i, j);
+      }
+      lub_.viscosity().EvaluateMany(pz.data(), tz.data(), nz_, visc.data());
       for (int j = 0; j < nz_; ++j) {
         flow.u_m_s(i, j) = u[j];
         flow.heating_w_m3(i, j) = tau[j] * tau[j] / eta[j];
+        const double beta = std::max(-visc[j].deta_dT / visc[j].eta_pa_s, 0.0);
+        const double couette = tau[j] != 0.0
+                                   ? std::min(tau_c[j] * tau_c[j] / (tau[j] * tau[j]), 1.0)
+                                   : 1.0;
+        flow.heating_decay_1_k(i, j) = std::isfinite(beta) ? beta * couette : 0.0;
       }
     }
+    flow.heating_reference_t_k = t_.t_k;
     // Heating limiter: the first energy solve of a sliding contact sees the heating of the
     // isothermal (cold) viscosity and can heat the film by thousands of kelvin, beyond the
     // range of the density law. Such a solve is repeated with the heating scaled down (by

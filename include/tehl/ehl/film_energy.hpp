@@ -57,6 +57,14 @@ struct FilmFlowField {
   Eigen::VectorXd dhdt_m_s;      // dh/dt at fixed x; empty = 0 (steady) [m/s]
   Eigen::MatrixXd u_m_s;         // n x nz: velocity u(x_i, xi_j) along x [m/s]
   Eigen::MatrixXd heating_w_m3;  // n x nz: viscous dissipation eta (du/dz)^2 >= 0 [W/m^3]
+  // Optional temperature response of the heating (both empty = heating independent of T):
+  // the solve uses heating_w_m3 exp(-heating_decay (T - heating_reference_t)), so that a
+  // dissipation computed from eta(T_ref) falls as the film warms (Couette shear at fixed
+  // sliding speed: eta (du/h)^2 ~ eta(T) ~ exp(-beta (T - T_ref)), beta = -d ln eta/dT).
+  // Linearized about each Picard iterate (a Newton step on this source); where T = T_ref the
+  // heating is heating_w_m3 itself, so a coupling that converges T_ref -> T is unaffected.
+  Eigen::MatrixXd heating_decay_1_k;      // n x nz: >= 0; empty = 0 [1/K]
+  Eigen::MatrixXd heating_reference_t_k;  // n x nz: T_ref; > 0, needed with the decay [K]
   double u1_m_s = 0;             // speed of surface 1 in +x; > 0 with moving solids [m/s]
   double u2_m_s = 0;             // speed of surface 2 in +x; > 0 with moving solids [m/s]
 };
