@@ -87,26 +87,17 @@ TEST(ContactScene, MovingWavinessMakesThePressureRippleAndConvergesEveryStep) {
   EXPECT_GT((hi - lo) / lo, 0.1);
 }
 
-TEST(ContactScene, GearCaseAndUnavailableEffectExitWithCode2) {
+// An effect the case cannot have: the Ree-Eyring film with a lubricant that has no [eyring]
+// section is rejected at its line before any solve.
+TEST(ContactScene, EffectWithoutItsDataExitsWithCode2) {
   std::string out;
   const fs::path d = TempDir("bad");
-  // The seed 004 gear case with the thermal effect switched on: rejected before any solve.
-  std::ifstream gear_in(std::string(TEHL_SOURCE_DIR) + "/cases/seed004_sae40.toml");
-  std::string gear_text((std::istreambuf_iterator<char>(gear_in)), {});
-  const auto at = gear_text.find("thermal = false");
-  ASSERT_NE(at, std::string::npos);
-  gear_text.replace(at, 15, "thermal = true");
-  const fs::path gear_case = d / "gear_thermal.toml";
-  std::ofstream(gear_case) << gear_text;
-  EXPECT_EQ(RunTehl("run " + gear_case.string(), &out), 2) << out;
-  EXPECT_NE(out.find(gear_case.string() + ":"), std::string::npos) << out;
-  EXPECT_NE(out.find("effects.thermal = true"), std::string::npos) << out;
-  const fs::path bad = d / "thermal.toml";
+  const fs::path bad = d / "eyring.toml";
   std::ofstream(bad) << "[contact]\nradius_1_m = 0.02\nspeed_1_m_s = 1.0\nspeed_2_m_s = 1.0\n"
-                        "load_n_per_m = 1e5\n[lubricant]\nname = \"sae40\"\n[effects]\n"
-                        "thermal = true\n";
+                        "load_n_per_m = 1e5\n[lubricant]\nname = \"reference_z068\"\n[effects]\n"
+                        "non_newtonian = true\n";
   EXPECT_EQ(RunTehl("run " + bad.string(), &out), 2) << out;
-  EXPECT_NE(out.find(bad.string() + ":9: effects.thermal = true"), std::string::npos) << out;
+  EXPECT_NE(out.find(bad.string() + ":9: effects.non_newtonian = true"), std::string::npos) << out;
 }
 
 }  // namespace
