@@ -1,11 +1,13 @@
 #include "tehl/scene/mesh_cycle_scene.hpp"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include "scene/case_reader.hpp"
@@ -362,6 +364,9 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
         ck.state = state;
         ck.history = solver.SaveTransient();
         internal::WriteCheckpoint(checkpoint_path, ck);
+        // For the --resume tests: with TEHL_STOP_AFTER_CHECKPOINT set, the process stops
+        // itself once the checkpoint is on disk, so a test can SIGKILL it at a known point.
+        if (std::getenv("TEHL_STOP_AFTER_CHECKPOINT") != nullptr) raise(SIGSTOP);
       }
     }
   }

@@ -6,10 +6,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <thread>
 
 #include "mesh_cycle_runs.hpp"
 
@@ -28,7 +26,9 @@ MeshCycleResult RunInProcess(const std::string& case_path, const std::string& di
   return RunMeshCycle(case_path, o);
 }
 
-// Starts `tehl run` as a child and kills it with SIGKILL once its first checkpoint exists.
+// Starts `tehl run` as a child and kills it with SIGKILL right after its first checkpoint:
+// TEHL_STOP_AFTER_CHECKPOINT makes the child stop itself (SIGSTOP) once the checkpoint is
+// written, so the kill lands at a known step however fast or slow the run is.
 void RunAndKillAfterCheckpoint(const std::string& case_path, const std::string& dir) {
   const std::string checkpoint =
       dir + "/" + fs::path(case_path).stem().string() + ".checkpoint";
@@ -39,18 +39,19 @@ void RunAndKillAfterCheckpoint(const std::string& case_path, const std::string& 
     std::FILE* e = std::freopen("/dev/null", "w", stderr);
     (void)o;
     (void)e;
+    setenv("TEHL_STOP_AFTER_CHECKPOINT", "1", 1);
     execl(TEHL_BINARY, "tehl", "run", case_path.c_str(), "-o", dir.c_str(), "-q",
           "--checkpoint-every", "5", static_cast<char*>(nullptr));
     _exit(127);
   }
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (!fs::exists(checkpoint) && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  ASSERT_TRUE(fs::exists(checkpoint)) << "no checkpoint appeared";
-  ASSERT_EQ(kill(pid, SIGKILL), 0);
   int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, WUNTRACED), pid);
+  ASSERT_TRUE(WIFSTOPPED(status)) << "the run ended before its first checkpoint";
+  ASSERT_TRUE(fs::exists(checkpoint)) << "stopped without a checkpoint";
+  ASSERT_EQ(kill(pid, SIGKILL), 0);
   ASSERT_EQ(waitpid(pid, &status, 0), pid);
-  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
+  ASSERT_TRUE(WIFSIGNALED(status));
+  EXPECT_EQ(WTERMSIG(status), SIGKILL);
 }
 
 void ExpectSameCycle(const MeshCycleResult& a, const MeshCycleResult& b) {
