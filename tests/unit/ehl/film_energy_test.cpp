@@ -99,6 +99,66 @@ TEST(FilmEnergySolver, PlaneCouetteGivesTheParabolicProfileBetweenFixedWalls) {
   EXPECT_NEAR(t.q2_w_m2[last], wall_flux, 1e-9 * wall_flux);
 }
 
+// Heating that falls as the film warms, g(T) = H exp(-beta (T - T0)) (FilmFlowField::
+// heating_decay_1_k, the Couette heating of a viscosity eta ~ exp(-beta T)), in a film at rest
+// between walls held at T0: -k T'' = H exp(-beta (T - T0)), T(0) = T(h) = T0. With
+// v = -beta (T - T0) this is v'' = lambda e^v, lambda = H beta / k, whose solution symmetric
+// about mid-film is v = 2 ln cos(b h/2) - 2 ln cos(b (z - h/2)) with 2 b^2 = lambda cos^2(b h/2)
+// (substitute: v'' = 2 b^2 / cos^2(b (z - h/2)) = lambda e^v). So, with s = b h / 2 the root of
+// 8 s^2 = mu cos^2 s, mu = H beta h^2 / k:
+//   T - T0 = (2/beta) [ln cos(s (2 xi - 1)) - ln cos s].
+// mu = 40: the rise at mid-film is 1.472/beta, against 5/beta for a heating that does not fall
+// (H h^2 / (8k)), so the decay is far from a small correction.
+double DecayingHeatingExact(double xi, double mu, double beta) {
+  double lo = 0, hi = M_PI / 2;  // 8 s^2 - mu cos^2 s increases from -mu to 2 pi^2 on [0, pi/2]
+  for (int it = 0; it < 200; ++it) {
+    const double s = 0.5 * (lo + hi);
+    (8 * s * s - mu * std::cos(s) * std::cos(s) > 0 ? hi : lo) = s;
+  }
+  const double s = 0.5 * (lo + hi);
+  return 2 / beta * (std::log(std::cos(s * (2 * xi - 1))) - std::log(std::cos(s)));
+}
+
+TEST(FilmEnergySolver, HeatingThatFallsWithTemperatureGivesTheAnalyticProfile) {
+  const double h = 1e-6, k = 0.13, beta = 0.046, mu = 40.0;
+  const double heating = mu * k / (beta * h * h);  // H [W/m^3]
+  const Lubricant oil = testing::IsoviscousOil(1.0);  // k = 0.13, no thermal expansion
+  const UniformGrid g(0.0, 1e-4, 5);
+  const double peak = DecayingHeatingExact(0.5, mu, beta);
+  EXPECT_NEAR(beta * peak, 1.4719, 1e-4);  // -2 ln cos s at the root s = 1.07121 of 8 s^2 = 40 cos^2 s
+  std::vector<double> errors;
+  for (int nz : {11, 21, 41}) {
+    FilmFlowField f;
+    f.p_pa = Eigen::VectorXd::Zero(g.size());
+    f.h_m = Eigen::VectorXd::Constant(g.size(), h);
+    f.u_m_s = Eigen::MatrixXd::Zero(g.size(), nz);
+    f.heating_w_m3 = Eigen::MatrixXd::Constant(g.size(), nz, heating);
+    f.heating_decay_1_k = Eigen::MatrixXd::Constant(g.size(), nz, beta);
+    f.heating_reference_t_k = Eigen::MatrixXd::Constant(g.size(), nz, kT0);
+    FilmEnergySolver solver(g, oil, Bronze(), Bronze(), kT0,
+                            Opts(nz, FilmEnergySolver::Walls::kFixedTemperature));
+    FilmTemperature t;
+    const auto sum = solver.Solve(f, nullptr, 0.0, &t);
+    ASSERT_TRUE(sum.usable()) << sum.BriefReport();
+    EXPECT_GT(sum.iterations, 1);  // nonlinear: the source is relinearized about each iterate
+    double worst = 0;
+    for (int i = 0; i < g.size(); ++i)
+      for (int j = 0; j < nz; ++j)
+        worst = std::max(worst, std::abs(t.t_k(i, j) - kT0 -
+                                         DecayingHeatingExact(j / (nz - 1.0), mu, beta)));
+    errors.push_back(worst / peak);
+    // All the heat generated leaves through the walls (no flow): the balance closes.
+    EXPECT_LT(sum.balance.RelativeError(), 1e-6) << nz;
+  }
+  for (size_t i = 1; i < errors.size(); ++i) {
+    const double order = std::log2(errors[i - 1] / errors[i]);
+    std::printf("decaying heating, refinement %zu: relative error %.3e, order %.3f\n", i,
+                errors[i], order);
+    EXPECT_GT(order, 1.8) << i;  // the central three-point stencil: second order
+  }
+  EXPECT_LT(errors.back(), 2e-3);
+}
+
 TEST(FilmEnergySolver, CouettePoiseuilleProfileConvergesAtSecondOrderInFilmNodes) {
   // Quartic exact profile (ParallelFilm::Exact with P = 2U, no reverse flow). The three-point
   // stencil applied to a quartic gives T'' + (dxi^2/12) T'''' exactly, and T'''' = -2 b^2 eta/k
