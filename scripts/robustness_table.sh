@@ -19,7 +19,7 @@ run() {  # binary label
     /^\[  FAILED  \] .*\(/ { failed = failed "\n" label ": " $0 }
     END { if (failed != "") print "FAILED TESTS:" failed > "/dev/stderr" }
   '
-}}
+}
 echo "| case | parameters | version: grid / steps | result | Newton iterations | max continuation stages / substeps | wall time [s] |"
 echo "|---|---|---|---|---|---|---|"
 run hard_cases_test fast
