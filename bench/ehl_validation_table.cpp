@@ -2,7 +2,10 @@
 //
 // For every point of the VALIDATION.md section 3 table (M = 10 .. 1000, L = 2 .. 20) with
 // p_H <= 2 GPa, the steady film is solved on 257 nodes and the grid doubled until H_c changes
-// by less than 0.5 % on doubling (capped at 8193 nodes, flagged when reached). Prints a
+// by less than 0.5 % on doubling (capped at 16385 nodes, flagged when reached). Each grid uses
+// the default solver choice (kAuto: reused dense LU up to dense_max_nodes, Newton-Krylov
+// above); if Newton-Krylov does not converge on a grid of at most 4097 nodes, the grid is
+// solved again with the reused dense LU, and every row names the solver that gave it. Prints a
 // markdown table with the converged H_c and H_min next to the Moes and Pan-Hamrock fits and
 // whether H_c lies in the band [0.97 x Pan-Hamrock, 1.03 x Moes] that VALIDATION.md expects.
 // The fits are printed for comparison only; nothing is tuned toward them.
@@ -10,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,7 +27,10 @@ using tehl::testing::MoesPoint;
 using tehl::testing::MoesSolver;
 
 constexpr int kFirstNodes = 257;
-constexpr int kMaxNodes = 8193;
+constexpr int kMaxNodes = 16385;
+// Dense fallback only up to 4097 nodes: the dense Jacobian is O(n^2) memory and its LU
+// O(n^3) time (about a minute at 4097 nodes, docs/performance.md).
+constexpr int kDenseFallbackMaxNodes = 4097;
 constexpr double kGridTolerance = 0.005;  // VALIDATION.md section 3: < 0.5 % on doubling
 
 struct Row {
@@ -32,7 +39,14 @@ struct Row {
   bool capped = false, usable = true;
   double hc = 0, hmin = 0, seconds = 0;
   int iterations = 0;  // Newton iterations on the final grid
-  std::vector<std::pair<int, double>> study;  // (n, H_c) of every grid
+  std::string solver;  // linear solver of the final grid
+  struct Grid {
+    int n;
+    double hc;  // NaN when the grid did not converge
+    std::string solver;
+    double seconds;
+  };
+  std::vector<Grid> study;
   std::string failure;
 };
 
@@ -42,27 +56,38 @@ Row Refine(const MoesPoint& mp) {
   const auto t0 = std::chrono::steady_clock::now();
   double previous = 0;
   for (int n = kFirstNodes; n <= kMaxNodes; n = 2 * n - 1) {
-    LineContactSolver::Options o;
-    // Newton-Krylov (band preconditioner) does not converge on 4097 nodes at M = 20, L = 10
-    // (GMRES stalls, docs/validation.md): the reused dense LU is used up to the cap.
-    o.dense_max_nodes = kMaxNodes;
-    MoesSolver ms(mp, n, o);
+    const auto tn = std::chrono::steady_clock::now();
+    LineContactSolver::Options o;  // default solver choice (kAuto)
+    auto ms = std::make_unique<MoesSolver>(mp, n, o);
     FilmState st;
-    const LineContactSolver::Summary sum = ms.solver.SolveSteady(mp.Conditions(), &st);
+    LineContactSolver::Summary sum = ms->solver.SolveSteady(mp.Conditions(), &st);
+    if (!sum.usable() && n > o.dense_max_nodes && n <= kDenseFallbackMaxNodes) {
+      std::fprintf(stderr, "  n = %d: %s; dense fallback\n", n, sum.BriefReport().c_str());
+      o.dense_max_nodes = n;  // kAuto then uses the reused dense LU on this grid
+      ms = std::make_unique<MoesSolver>(mp, n, o);
+      st = FilmState();
+      sum = ms->solver.SolveSteady(mp.Conditions(), &st);
+    }
+    const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - tn).count();
     row.n = n;
     row.iterations = sum.iterations;
+    row.solver = sum.linear_solver;
     if (!sum.usable()) {
       // A grid too coarse for the point (e.g. M >= 500 on 257 nodes): note it and refine.
       row.usable = false;
       row.failure = "n = " + std::to_string(n) + ": " + sum.BriefReport();
-      row.study.emplace_back(n, std::nan(""));
+      row.study.push_back({n, std::nan(""), sum.linear_solver, sec});
+      std::fprintf(stderr, "  n = %d: no convergence (%.1f s)\n", n, sec);
+      previous = 0;  // the 0.5 % criterion compares two successive converged grids
       if (2 * n - 1 > kMaxNodes) break;
       continue;
     }
     row.usable = true;
-    row.hc = ms.Hc(st);
-    row.hmin = ms.Hmin(st);
-    row.study.emplace_back(n, row.hc);
+    row.hc = ms->Hc(st);
+    row.hmin = ms->Hmin(st);
+    row.study.push_back({n, row.hc, sum.linear_solver, sec});
+    std::fprintf(stderr, "  n = %d: H_c = %.5f, H_min = %.5f, %s, %d Newton its (%.1f s)\n", n,
+                 row.hc, row.hmin, sum.linear_solver.c_str(), sum.iterations, sec);
     if (previous > 0 && std::abs(row.hc - previous) < kGridTolerance * row.hc) break;
     previous = row.hc;
     if (2 * n - 1 > kMaxNodes) row.capped = true;
@@ -88,9 +113,10 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "M = %g L = %g: n = %d H_c = %.4f (%.1f s)%s\n", m, l, r.n, r.hc,
                    r.seconds, r.usable ? "" : (" FAILED: " + r.failure).c_str());
     }
-  std::printf("| M | L | p_H [GPa] | n | H_c | H_min | Moes H_c | Pan-Hamrock H_c | H_c/PH | "
-              "H_c/Moes | in band | Newton its | time [s] |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| M | L | p_H [GPa] | n | H_c | H_min | Moes H_c | Pan-Hamrock H_c | H_c/PH | "
+      "H_c/Moes | in band | Newton its | time [s] | solver |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int outside = 0, capped = 0, failed = 0;
   for (const Row& r : rows) {
     const double ph = r.mp.PanHamrockHc(), moes = r.mp.MoesHc();
@@ -98,24 +124,33 @@ int main(int argc, char** argv) {
     outside += !in_band;
     capped += r.capped;
     failed += !r.usable;
-    std::printf("| %g | %g | %.2f | %d%s | %.4f | %.4f | %.4f | %.4f | %.3f | %.3f | %s | %d | "
-                "%.1f |\n",
-                r.mp.M, r.mp.L, r.mp.Hertz().max_pressure_pa / 1e9, r.n,
-                r.capped ? " (cap)" : "", r.hc, r.hmin, moes, ph, r.hc / ph, r.hc / moes,
-                !r.usable ? "failed" : (in_band ? "yes" : "no"), r.iterations, r.seconds);
+    std::printf(
+        "| %g | %g | %.2f | %d%s | %.4f | %.4f | %.4f | %.4f | %.3f | %.3f | %s | %d | "
+        "%.1f | %s |\n",
+        r.mp.M, r.mp.L, r.mp.Hertz().max_pressure_pa / 1e9, r.n, r.capped ? " (cap)" : "", r.hc,
+        r.hmin, moes, ph, r.hc / ph, r.hc / moes, !r.usable ? "failed" : (in_band ? "yes" : "no"),
+        r.iterations, r.seconds, r.solver.c_str());
   }
-  std::printf("\n%zu points with p_H <= 2 GPa; %d outside [0.97 PH, 1.03 Moes]; %d reached the "
-              "cap of %d nodes; %d failed.\n",
-              rows.size(), outside, capped, kMaxNodes, failed);
+  std::printf(
+      "\n%zu points with p_H <= 2 GPa; %d outside [0.97 PH, 1.03 Moes]; %d reached the "
+      "cap of %d nodes; %d failed.\n",
+      rows.size(), outside, capped, kMaxNodes, failed);
   for (const Row& r : rows) {
     if (!r.failure.empty())
       std::printf("\nM = %g, L = %g: %s (last failure)\n", r.mp.M, r.mp.L, r.failure.c_str());
-    const bool in_band = r.usable && r.hc >= 0.97 * r.mp.PanHamrockHc() &&
-                         r.hc <= 1.03 * r.mp.MoesHc();
+    const bool in_band =
+        r.usable && r.hc >= 0.97 * r.mp.PanHamrockHc() && r.hc <= 1.03 * r.mp.MoesHc();
     if (in_band && !r.capped && r.failure.empty()) continue;
-    std::printf("\nGrid study, M = %g, L = %g:\n\n| n | H_c |\n|---|---|\n", r.mp.M, r.mp.L);
-    for (const auto& [n, hc] : r.study)
-      std::printf(std::isnan(hc) ? "| %d | no convergence |\n" : "| %d | %.5f |\n", n, hc);
+    std::printf(
+        "\nGrid study, M = %g, L = %g:\n\n| n | H_c | solver | time [s] |\n"
+        "|---|---|---|---|\n",
+        r.mp.M, r.mp.L);
+    for (const Row::Grid& g : r.study) {
+      if (std::isnan(g.hc))
+        std::printf("| %d | no convergence | %s | %.1f |\n", g.n, g.solver.c_str(), g.seconds);
+      else
+        std::printf("| %d | %.5f | %s | %.1f |\n", g.n, g.hc, g.solver.c_str(), g.seconds);
+    }
   }
   return failed ? 1 : 0;
 }
