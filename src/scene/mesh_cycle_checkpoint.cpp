@@ -50,6 +50,7 @@ class In {
   explicit In(std::vector<char> b) : buf_(std::move(b)) {}
   void Raw(void* p, size_t n) {
     if (pos_ + n > buf_.size()) throw std::runtime_error("truncated checkpoint");
+    if (n == 0) return;  // an empty field: its data pointer may be null
     std::memcpy(p, buf_.data() + pos_, n);
     pos_ += n;
   }
