@@ -4,6 +4,7 @@ list(APPEND TEHL_SOURCES
   src/scene/case_reader.cpp
   src/scene/film_case.cpp
   src/scene/contact_scene.cpp
+  src/scene/contact_csv.cpp
   src/scene/gear_case.cpp
   src/scene/dynamic_load.cpp
   src/scene/mesh_cycle_output.cpp

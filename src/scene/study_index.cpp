@@ -155,19 +155,27 @@ std::vector<std::string> SplitCsv(const std::string& line) {
   return out;
 }
 
+// The _steps.csv of a [contact] run. t_max_k, mu and wall_time_s are read when the file has
+// them (files of earlier versions do not: those summaries stay 0, as for a gear result without
+// /cycle/T_max); the wall time is the sum over the steps.
 SceneRow ContactRow(const std::string& path) {
   std::ifstream in(path);
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error("cannot read " + path);
   const auto head = SplitCsv(line);
+  const size_t none = head.size();
+  auto find = [&](const std::string& name) {
+    return static_cast<size_t>(std::find(head.begin(), head.end(), name) - head.begin());
+  };
   auto col = [&](const std::string& name) {
-    const auto it = std::find(head.begin(), head.end(), name);
-    if (it == head.end()) throw std::runtime_error(path + ": no column " + name);
-    return static_cast<size_t>(it - head.begin());
+    const size_t i = find(name);
+    if (i == none) throw std::runtime_error(path + ": no column " + name);
+    return i;
   };
   const size_t ih = col("h_min_m"), ic = col("h_c_m"), ip = col("p_max_pa"),
                it = col("termination");
-  std::vector<double> h_min, h_c, p_max;
+  const size_t itm = find("t_max_k"), imu = find("mu"), iwt = find("wall_time_s");
+  std::vector<double> h_min, h_c, p_max, t_max, mu;
   SceneRow r;
   r.status = "ok";
   while (std::getline(in, line)) {
@@ -177,6 +185,9 @@ SceneRow ContactRow(const std::string& path) {
     h_min.push_back(std::stod(f[ih]));
     h_c.push_back(std::stod(f[ic]));
     p_max.push_back(std::stod(f[ip]));
+    if (itm != none) t_max.push_back(std::stod(f[itm]));
+    if (imu != none) mu.push_back(std::stod(f[imu]));
+    if (iwt != none) r.wall_time_s += std::stod(f[iwt]);
     if (f[it] != "converged") {
       r.status = "not_converged";
       r.message = f[it];
@@ -187,6 +198,9 @@ SceneRow ContactRow(const std::string& path) {
   r.h_c_min_m = Min(h_c);
   r.h_c_pitch_m = h_c.empty() ? 0.0 : h_c.back();
   r.p_max_max_pa = Max(p_max);
+  r.t_max_max_k = Max(t_max);
+  r.mu_mean = Mean(mu);
+  r.mu_max = Max(mu);
   return r;
 }
 

@@ -1,5 +1,8 @@
 // A plain line contact of two discs or rollers ([contact] case, no gears): a steady solve,
-// or time stepping through tables of load and surface speeds. Writes CSV files of the film.
+// or time stepping through tables of load and surface speeds. Writes CSV files of the film
+// (NAME_profile.csv, NAME_steps.csv; columns in docs/results.md). Every number is checked before
+// anything is written: a NaN or Inf throws NonFiniteError (tehl/io/hdf5_writer.hpp) naming the
+// file, column and row, and leaves no file under the final names.
 #pragma once
 
 #include <string>
@@ -10,24 +13,29 @@
 namespace tehl {
 
 struct ContactRunOptions {
-  bool quiet = false;          // no progress line on stderr
-  std::string output_dir;      // overrides [output] directory when not empty
+  bool quiet = false;      // no progress line on stderr
+  std::string output_dir;  // overrides [output] directory when not empty
 };
 
 struct ContactStepRecord {
-  double time_s = 0;           // [s]
-  double load_n_per_m = 0;     // w [N/m]
-  double u1_m_s = 0, u2_m_s = 0;  // surface speeds [m/s]
-  double h_min_m = 0, h_c_m = 0;  // minimum and central film [m]
-  double p_max_pa = 0;         // [Pa]
+  double time_s = 0;                // [s]
+  double load_n_per_m = 0;          // w [N/m]
+  double u1_m_s = 0, u2_m_s = 0;    // surface speeds [m/s]
+  double h_min_m = 0, h_c_m = 0;    // minimum and central film [m]
+  double p_max_pa = 0;              // [Pa]
+  double t_max_k = 0;               // largest film temperature; the inlet temperature when the
+                                    //   run is isothermal [K]
+  double friction_coefficient = 0;  // mu = (|F1| + |F2|) / (2 w), seed 004 eq. 16
+                                    //   (LineContactSolver::Friction, as /cycle/mu) [-]
+  double wall_time_s = 0;           // wall time of this step's solve (substeps included) [s]
   LineContactSolver::Summary summary;
 };
 
 struct ContactRunResult {
   std::vector<ContactStepRecord> steps;  // one for a steady run; steady start + steps else
-  std::string profile_csv;     // x, p, h of the last level
-  std::string history_csv;     // per-step table (transient runs), else empty
-  bool converged() const;      // every step usable
+  std::string profile_csv;               // x, p, h (and T_mid when thermal) of the last level
+  std::string history_csv;  // NAME_steps.csv: the steady solve, then one row per time step
+  bool converged() const;   // every step usable
 };
 
 // Reads and runs a [contact] case. Throws InputError (with file:line) for bad input.

@@ -1,15 +1,20 @@
-// The [contact] scene end to end: `tehl run` on the shipped disc cases and on bad input.
+// The [contact] scene end to end: `tehl run` on the shipped disc cases and on bad input; the
+// per-step T_max, friction and wall time of the _steps.csv and the NaN/Inf guard of both files.
 #include "tehl/scene/contact_scene.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
+#include "scene/contact_csv.hpp"
+#include "tehl/io/hdf5_writer.hpp"
 #include "tehl/units.hpp"
 
 namespace tehl {
@@ -31,6 +36,64 @@ int RunTehl(const std::string& args, std::string* output) {
   while (fgets(buf, sizeof buf, pipe)) *output += buf;
   const int status = pclose(pipe);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// cases/disc_steady.toml (R = 10 mm steel, w = 100 kN/m, SAE 40, pure rolling at 1 m/s) with
+// the inlet temperature given in K and the grid and thermal switch of the test.
+constexpr double kInletK = 313.15;
+std::string DiscCase(const fs::path& dir, bool thermal, int nodes) {
+  const fs::path path = dir / "disc.toml";
+  std::ofstream(path) << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nspeed_1_m_s = 1.0\n"
+                         "speed_2_m_s = 1.0\nload_n_per_m = 1.0e5\n[lubricant]\nname = \"sae40\"\n"
+                         "inlet_temperature_k = 313.15\n[effects]\ntransient = false\nthermal = "
+                      << (thermal ? "true" : "false") << "\n[numerics]\ngrid_points = " << nodes
+                      << "\n";
+  return path.string();
+}
+
+// A CSV file as its header and rows of cells.
+struct Csv {
+  std::vector<std::string> head;
+  std::vector<std::vector<std::string>> rows;
+  size_t Col(const std::string& name) const {
+    const auto it = std::find(head.begin(), head.end(), name);
+    EXPECT_NE(it, head.end()) << "no column " << name;
+    return static_cast<size_t>(it - head.begin());
+  }
+  double At(size_t row, const std::string& name) const { return std::stod(rows[row][Col(name)]); }
+};
+
+Csv ReadCsv(const std::string& path) {
+  auto split = [](const std::string& line) {
+    std::vector<std::string> out(1);
+    for (char c : line) {
+      if (c == ',')
+        out.emplace_back();
+      else
+        out.back() += c;
+    }
+    return out;
+  };
+  Csv csv;
+  std::ifstream in(path);
+  std::string line;
+  if (std::getline(in, line)) csv.head = split(line);
+  while (std::getline(in, line))
+    if (!line.empty()) csv.rows.push_back(split(line));
+  return csv;
+}
+
+// Upper bound of mu for a Newtonian film in pure rolling. The wall shear stress of the
+// Poiseuille profile is tau = -+(h/2) dp/dx on both surfaces (no Couette part), so
+// mu = (|F1| + |F2|)/(2w) = |integral h dp/dx dx| / (2w) = |integral p dh/dx dx| / (2w)
+// (by parts, p = 0 at both ends) <= max|dh/dx| / 2 where p > 0. Outside the Hertz zone the
+// gap slope of the deformed surfaces, (|x| - sqrt(x^2 - b^2))/R, is below the rigid |x|/R, and
+// the pressure starts after the inlet end x = -4.5 b (case_schema x_start_b default), so
+// mu < 4.5 b / (2 R).
+double RollingFrictionBound() {
+  const double e_prime = ReducedModulus(206e9, 0.3, 206e9, 0.3);
+  const double b = LineContactHertz(1e5, 0.01, e_prime).half_width_m;
+  return 4.5 * b / (2 * 0.01);
 }
 
 TEST(ContactScene, SteadyDiscCaseConvergesAndWritesItsFiles) {
@@ -85,6 +148,96 @@ TEST(ContactScene, MovingWavinessMakesThePressureRippleAndConvergesEveryStep) {
     hi = std::max(hi, r.steps[k].p_max_pa);
   }
   EXPECT_GT((hi - lo) / lo, 0.1);
+}
+
+// Isothermal: T_max is the inlet temperature itself (ContactStepRecord::t_max_k), mu of the
+// rolling film is positive and below the Poiseuille bound, the step took time, and the files
+// carry the new columns (and no t_mid_k in the profile).
+TEST(ContactScene, IsothermalDiscRecordsTheInletTemperatureAndRollingFriction) {
+  ContactRunOptions o;
+  o.quiet = true;
+  const fs::path d = TempDir("iso_columns");
+  o.output_dir = d.string();
+  const ContactRunResult r = RunContactCase(DiscCase(d, false, 257), o);
+  ASSERT_TRUE(r.converged());
+  ASSERT_EQ(r.steps.size(), 1u);
+  const ContactStepRecord& s = r.steps[0];
+  EXPECT_EQ(s.t_max_k, kInletK);
+  EXPECT_GT(s.friction_coefficient, 0.0);
+  EXPECT_LT(s.friction_coefficient, RollingFrictionBound());
+  EXPECT_GT(s.wall_time_s, 0.0);
+  const Csv steps = ReadCsv(r.history_csv);
+  ASSERT_EQ(steps.rows.size(), 1u);
+  // Existing columns first and unchanged; the text column stays last.
+  const std::vector<std::string> head = {"t_s",         "w_n_per_m",         "u1_m_s",
+                                         "u2_m_s",      "h_min_m",           "h_c_m",
+                                         "p_max_pa",    "t_max_k",           "mu",
+                                         "wall_time_s", "newton_iterations", "coupling_iterations",
+                                         "termination"};
+  EXPECT_EQ(steps.head, head);
+  // %.9e keeps 10 significant digits.
+  EXPECT_NEAR(steps.At(0, "t_max_k"), kInletK, 1e-9 * kInletK);
+  EXPECT_NEAR(steps.At(0, "mu"), s.friction_coefficient, 1e-9 * s.friction_coefficient);
+  EXPECT_NEAR(steps.At(0, "wall_time_s"), s.wall_time_s, 1e-9 * s.wall_time_s);
+  EXPECT_EQ(steps.At(0, "coupling_iterations"), s.summary.coupling_iterations);
+  const Csv profile = ReadCsv(r.profile_csv);
+  EXPECT_EQ(profile.head, (std::vector<std::string>{"x_m", "p_pa", "h_m"}));
+}
+
+// Thermal pure rolling (converges: docs/studies.md "Known problems"): the film is heated by
+// the Poiseuille shear and the inlet compression, so T_max > T0; mu as above (identical solids
+// at one speed: T and eta are symmetric about mid-film, so the wall stresses stay
+// -+(h/2) dp/dx and the bound holds); the coupling iterated; the profile has T_mid, never
+// above T_max.
+TEST(ContactScene, ThermalRollingDiscIsHotterThanItsInletWithPositiveFriction) {
+  ContactRunOptions o;
+  o.quiet = true;
+  const fs::path d = TempDir("thermal_columns");
+  o.output_dir = d.string();
+  const ContactRunResult r = RunContactCase(DiscCase(d, true, 257), o);
+  ASSERT_TRUE(r.converged()) << r.steps.back().summary.message;
+  const ContactStepRecord& s = r.steps[0];
+  EXPECT_GT(s.t_max_k, kInletK);
+  EXPECT_GT(s.friction_coefficient, 0.0);
+  EXPECT_LT(s.friction_coefficient, RollingFrictionBound());
+  EXPECT_GE(s.summary.coupling_iterations, 1);
+  const Csv steps = ReadCsv(r.history_csv);
+  ASSERT_EQ(steps.rows.size(), 1u);
+  EXPECT_GT(steps.At(0, "t_max_k"), kInletK);
+  EXPECT_GT(steps.At(0, "mu"), 0.0);
+  EXPECT_GT(steps.At(0, "wall_time_s"), 0.0);
+  const Csv profile = ReadCsv(r.profile_csv);
+  ASSERT_EQ(profile.head, (std::vector<std::string>{"x_m", "p_pa", "h_m", "t_mid_k"}));
+  ASSERT_EQ(profile.rows.size(), 257u);
+  double t_mid_max = 0;
+  for (size_t i = 0; i < profile.rows.size(); ++i)
+    t_mid_max = std::max(t_mid_max, profile.At(i, "t_mid_k"));
+  EXPECT_GT(t_mid_max, kInletK);
+  EXPECT_LE(t_mid_max, s.t_max_k * (1 + 1e-9));
+}
+
+// The guard: a NaN or Inf is refused before any byte is formatted, naming file, column, row.
+TEST(ContactScene, NonFiniteValuesAreRefusedWithTheirColumnAndRow) {
+  std::vector<ContactStepRecord> steps(3);
+  for (auto& s : steps) s.summary.termination = LineContactSolver::Termination::kConverged;
+  EXPECT_NO_THROW(internal::ContactStepsCsv("a_steps.csv", steps));
+  steps[1].friction_coefficient = std::nan("");
+  try {
+    internal::ContactStepsCsv("a_steps.csv", steps);
+    ADD_FAILURE() << "a NaN mu was formatted";
+  } catch (const NonFiniteError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("a_steps.csv"), std::string::npos) << what;
+    EXPECT_NE(what.find("mu[1]"), std::string::npos) << what;
+  }
+  const std::vector<double> x = {0, 1, 2}, p = {0, 1, 0}, h = {1, 1, 1};
+  EXPECT_NO_THROW(internal::ContactProfileCsv("a_profile.csv", x, p, h, {}));
+  try {
+    internal::ContactProfileCsv("a_profile.csv", x, p, h, {300, 310, HUGE_VAL});
+    ADD_FAILURE() << "an infinite T_mid was formatted";
+  } catch (const NonFiniteError& e) {
+    EXPECT_NE(std::string(e.what()).find("t_mid_k[2]"), std::string::npos) << e.what();
+  }
 }
 
 // An effect the case cannot have: the Ree-Eyring film with a lubricant that has no [eyring]

@@ -1,0 +1,81 @@
+#include "scene/contact_csv.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "tehl/io/hdf5_writer.hpp"
+
+namespace tehl::internal {
+namespace {
+
+struct Column {
+  const char* header;
+  std::vector<double> values;
+};
+
+// Refuses the first NaN or Inf of any column, naming the file, the column and the row.
+void CheckColumns(const std::string& file, const std::vector<Column>& columns) {
+  for (const Column& c : columns) CheckFinite("CSV " + file + " column " + c.header, c.values);
+}
+
+std::string Header(const std::vector<Column>& columns) {
+  std::string o;
+  for (size_t j = 0; j < columns.size(); ++j) {
+    if (j) o += ',';
+    o += columns[j].header;
+  }
+  return o;
+}
+
+std::string Cells(const std::vector<Column>& columns, size_t row) {
+  std::string o;
+  char cell[40];
+  for (size_t j = 0; j < columns.size(); ++j) {
+    std::snprintf(cell, sizeof cell, "%s%.9e", j ? "," : "", columns[j].values[row]);
+    o += cell;
+  }
+  return o;
+}
+
+}  // namespace
+
+std::string ContactStepsCsv(const std::string& file, const std::vector<ContactStepRecord>& steps) {
+  std::vector<Column> num = {{"t_s", {}},     {"w_n_per_m", {}},  {"u1_m_s", {}},   {"u2_m_s", {}},
+                             {"h_min_m", {}}, {"h_c_m", {}},      {"p_max_pa", {}}, {"t_max_k", {}},
+                             {"mu", {}},      {"wall_time_s", {}}};
+  for (const ContactStepRecord& s : steps) {
+    const double row[] = {
+        s.time_s,  s.load_n_per_m,         s.u1_m_s,     s.u2_m_s, s.h_min_m, s.h_c_m, s.p_max_pa,
+        s.t_max_k, s.friction_coefficient, s.wall_time_s};
+    for (size_t j = 0; j < num.size(); ++j) num[j].values.push_back(row[j]);
+  }
+  CheckColumns(file, num);
+  std::string o = Header(num) + ",newton_iterations,coupling_iterations,termination\n";
+  for (size_t k = 0; k < steps.size(); ++k) {
+    const LineContactSolver::Summary& sum = steps[k].summary;
+    char tail[64];
+    std::snprintf(tail, sizeof tail, ",%d,%d,", sum.total_iterations, sum.coupling_iterations);
+    o += Cells(num, k) + tail + ToString(sum.termination) + "\n";
+  }
+  return o;
+}
+
+std::string ContactProfileCsv(const std::string& file,
+                              const std::vector<double>& x_m,
+                              const std::vector<double>& p_pa,
+                              const std::vector<double>& h_m,
+                              const std::vector<double>& t_mid_k) {
+  std::vector<Column> cols = {{"x_m", x_m}, {"p_pa", p_pa}, {"h_m", h_m}};
+  if (!t_mid_k.empty()) cols.push_back({"t_mid_k", t_mid_k});
+  for (const Column& c : cols)
+    if (c.values.size() != x_m.size())
+      throw std::runtime_error("CSV " + file + ": column " + c.header + " has " +
+                               std::to_string(c.values.size()) + " rows, expected " +
+                               std::to_string(x_m.size()));
+  CheckColumns(file, cols);
+  std::string o = Header(cols) + "\n";
+  for (size_t i = 0; i < x_m.size(); ++i) o += Cells(cols, i) + "\n";
+  return o;
+}
+
+}  // namespace tehl::internal

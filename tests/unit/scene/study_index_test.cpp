@@ -1,0 +1,149 @@
+// The study index of [contact] scenes: ContactRow reads T_max, mu and the wall time of a disc
+// run's _steps.csv (and files without those columns), and `tehl sweep` over a disc case
+// writes them into index.csv, equal after --resume.
+#include "tehl/scene/study_index.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "unit/cli/run_tehl.hpp"
+
+namespace tehl {
+namespace {
+namespace fs = std::filesystem;
+
+// A contact study with one scene whose result file is `steps_csv`.
+Study OneSceneStudy(const std::string& name, const std::string& steps_csv, StudyScene* scene) {
+  Study s;
+  s.gear = false;
+  s.output_dir = testing::UniqueTempPath(name);
+  scene->id = 0;
+  scene->name = "scene_0000";
+  fs::create_directories(s.ScenesDir());
+  std::ofstream(s.ResultPath(*scene)) << steps_csv;
+  return s;
+}
+
+// A file of the earlier format (no t_max_k, mu, wall_time_s): the film summaries are read, the
+// others stay 0 ("0: not in the file", study_index.hpp).
+TEST(StudyIndex, ContactStepsWithoutTheNewColumnsGiveZeros) {
+  StudyScene scene;
+  const Study s = OneSceneStudy(
+      "old_steps",
+      "t_s,w_n_per_m,u1_m_s,u2_m_s,h_min_m,h_c_m,p_max_pa,newton_iterations,termination\n"
+      "0.0,1e5,1,1,3.0e-7,4.0e-7,6.0e8,12,converged\n"
+      "1e-4,2e5,1,1,2.5e-7,3.5e-7,8.0e8,5,converged\n",
+      &scene);
+  const SceneRow r = ReadSceneRow(s, scene);
+  EXPECT_EQ(r.status, "ok");
+  EXPECT_EQ(r.steps, 2);
+  EXPECT_EQ(r.h_min_min_m, 2.5e-7);
+  EXPECT_EQ(r.h_c_pitch_m, 3.5e-7);  // contact cases: the last step
+  EXPECT_EQ(r.p_max_max_pa, 8.0e8);
+  EXPECT_EQ(r.t_max_max_k, 0.0);
+  EXPECT_EQ(r.mu_mean, 0.0);
+  EXPECT_EQ(r.mu_max, 0.0);
+  EXPECT_EQ(r.wall_time_s, 0.0);
+}
+
+// The new columns: T_max the largest, mu mean and max, wall time the sum over the steps.
+// Expected values by hand from the three rows: max(320, 335, 330) = 335 K;
+// mu (0.01 + 0.04 + 0.03)/3 = 0.08/3, max 0.04; wall 0.5 + 0.25 + 0.125 = 0.875 s (exact in
+// binary).
+TEST(StudyIndex, ContactStepsWithTheNewColumnsAreSummarized) {
+  StudyScene scene;
+  const Study s = OneSceneStudy(
+      "new_steps",
+      "t_s,w_n_per_m,u1_m_s,u2_m_s,h_min_m,h_c_m,p_max_pa,t_max_k,mu,wall_time_s,"
+      "newton_iterations,coupling_iterations,termination\n"
+      "0.0,1e5,1.2,0.8,3.0e-7,4.0e-7,6.0e8,320,0.01,0.5,12,8,converged\n"
+      "1e-4,1e5,1.2,0.8,2.9e-7,3.9e-7,6.1e8,335,0.04,0.25,5,4,converged\n"
+      "2e-4,1e5,1.2,0.8,2.8e-7,3.8e-7,6.2e8,330,0.03,0.125,40,40,coupling_not_converged\n",
+      &scene);
+  const SceneRow r = ReadSceneRow(s, scene);
+  EXPECT_EQ(r.status, "not_converged");
+  EXPECT_EQ(r.message, "coupling_not_converged");
+  EXPECT_EQ(r.steps, 3);
+  EXPECT_EQ(r.t_max_max_k, 335.0);
+  EXPECT_NEAR(r.mu_mean, 0.08 / 3, 1e-15);
+  EXPECT_EQ(r.mu_max, 0.04);
+  EXPECT_EQ(r.wall_time_s, 0.875);
+}
+
+// index.csv as header and rows of cells (no quoted cells in this study).
+std::vector<std::vector<std::string>> ReadCsvCells(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty()) continue;
+    rows.emplace_back(1);
+    for (char c : line) {
+      if (c == ',')
+        rows.back().emplace_back();
+      else
+        rows.back().back() += c;
+    }
+  }
+  return rows;
+}
+
+size_t Column(const std::vector<std::string>& head, const std::string& name) {
+  const auto it = std::find(head.begin(), head.end(), name);
+  EXPECT_NE(it, head.end()) << "no column " << name;
+  return static_cast<size_t>(it - head.begin());
+}
+
+// A thermal pure-rolling disc (cases/disc_steady.toml at 129 nodes, T0 = 313.15 K given) at two
+// loads. Every row: T_max above the inlet (the film is heated), 0 < mu_mean <= mu_max (one
+// step: equal), wall time > 0. A --resume rebuilds the rows from the files: the same T_max and
+// mu (read from the same cells) and a positive wall time (the sum of the file's steps).
+TEST(StudyIndex, DiscSweepIndexCarriesTemperatureFrictionAndWallTime) {
+  const std::string dir = testing::UniqueTempPath("disc_study");
+  fs::create_directories(dir);
+  std::ofstream(dir + "/disc.toml")
+      << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nspeed_1_m_s = 1.0\n"
+         "speed_2_m_s = 1.0\nload_n_per_m = 1.0e5\n[lubricant]\nname = \"sae40\"\n"
+         "inlet_temperature_k = 313.15\n[effects]\ntransient = false\nthermal = true\n"
+         "[numerics]\ngrid_points = 129\n";
+  std::ofstream(dir + "/study.toml") << "[study]\nbase = \"disc.toml\"\n[[vary]]\n"
+                                        "key = \"contact.load_n_per_m\"\nvalues = [5e4, 1e5]\n";
+  const std::string out = dir + "/out";
+  const testing::RunResult r =
+      testing::RunTehl("sweep -j 2 -q -o '" + out + "' '" + dir + "/study.toml'");
+  ASSERT_TRUE(r.exited) << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto first = ReadCsvCells(out + "/index.csv");
+  ASSERT_EQ(first.size(), 3u);
+  const auto& head = first[0];
+  const size_t it = Column(head, "t_max_max_k"), im = Column(head, "mu_mean"),
+               ix = Column(head, "mu_max"), iw = Column(head, "wall_time_s"),
+               is = Column(head, "status"), ic = Column(head, "computed");
+  for (size_t k = 1; k < first.size(); ++k) {
+    EXPECT_EQ(first[k][is], "ok") << k;
+    EXPECT_GT(std::stod(first[k][it]), 313.15) << k;
+    EXPECT_GT(std::stod(first[k][im]), 0.0) << k;
+    EXPECT_EQ(std::stod(first[k][ix]), std::stod(first[k][im])) << k;  // one step
+    EXPECT_GT(std::stod(first[k][iw]), 0.0) << k;
+  }
+  const testing::RunResult again =
+      testing::RunTehl("sweep --resume -j 2 -q -o '" + out + "' '" + dir + "/study.toml'");
+  ASSERT_TRUE(again.exited) << again.err;
+  ASSERT_EQ(again.exit_code, 0) << again.out << again.err;
+  const auto second = ReadCsvCells(out + "/index.csv");
+  ASSERT_EQ(second.size(), first.size());
+  for (size_t k = 1; k < second.size(); ++k) {
+    EXPECT_EQ(second[k][ic], "0") << k;
+    EXPECT_EQ(second[k][it], first[k][it]) << k;
+    EXPECT_EQ(second[k][im], first[k][im]) << k;
+    EXPECT_EQ(second[k][ix], first[k][ix]) << k;
+    EXPECT_GT(std::stod(second[k][iw]), 0.0) << k;
+  }
+}
+
+}  // namespace
+}  // namespace tehl
