@@ -198,12 +198,22 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
                                                   const FilmTemperature* previous,
                                                   double dt_s,
                                                   FilmTemperature* t) const {
+  return Solve(flow, previous, dt_s, options_.tolerance_k, t);
+}
+
+FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
+                                                  const FilmTemperature* previous,
+                                                  double dt_s,
+                                                  double tolerance_k,
+                                                  FilmTemperature* t) const {
   const auto start = std::chrono::steady_clock::now();
   const int n = grid_.size(), nz = options_.film_nodes;
   const bool moving = options_.walls == Walls::kMovingSolids;
   const bool transient = dt_s > 0;
   ProblemList bad;
   CheckFlow(flow, n, nz, moving, &bad);
+  if (!(tolerance_k > 0))
+    bad.Add({"", 0, "tolerance_k", std::to_string(tolerance_k), "must be > 0", "> 0 [K]"});
   if (transient && (!previous || !previous->Matches(n, nz)))
     bad.Add({"", 0, "previous", previous ? "wrong size" : "null",
              "a transient step needs the previous level", "a FilmTemperature of n x nz"});
@@ -264,7 +274,7 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
     // of the full A, unless it already had one (then what remains is the Picard nonlinearity).
     double r = change / last_change;
     const bool poor =
-        !ok || r >= 1 || ChordStepsToGo(change, r, options_.tolerance_k) > options_.max_chord_steps;
+        !ok || r >= 1 || ChordStepsToGo(change, r, tolerance_k) > options_.max_chord_steps;
     if (poor && !(fresh && system.factorized_exact())) {
       ok = factorize(true) && system.Correction(x, &delta);
       if (ok) change = ChangeOfTemperatures(delta, n, nz);
@@ -283,7 +293,7 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
     s.max_change_k = (linear && exact_step && options_.relaxation == 1.0) ? 0.0 : change;
     last_change = change;
     // Remaining error of a contraction r after a step of size `change`: change r / (1 - r).
-    if (s.max_change_k * std::max(1.0, r / (1 - r)) < options_.tolerance_k) {
+    if (s.max_change_k * std::max(1.0, r / (1 - r)) < tolerance_k) {
       s.termination = Termination::kConverged;
       break;
     }
@@ -296,7 +306,7 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
   if (s.termination == Termination::kMaxIterations) {
     std::ostringstream m;
     m << "no convergence in " << options_.max_iterations << " Picard iterations (last change "
-      << s.max_change_k << " K > tolerance " << options_.tolerance_k << " K)";
+      << s.max_change_k << " K > tolerance " << tolerance_k << " K)";
     s.message = m.str();
   }
   s.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -12,13 +12,12 @@
 // Private to src/ehl.
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "tehl/ehl/film_effects.hpp"
 #include "tehl/ehl/film_energy.hpp"
@@ -48,8 +47,11 @@ class AndersonMixer {
 
 class FilmField {
  public:
-  FilmField(const UniformGrid& grid, const Lubricant& lubricant, const FilmEffects& effects,
-            const ContactSolids& solids, const LineContactSolver::Options& options);
+  FilmField(const UniformGrid& grid,
+            const Lubricant& lubricant,
+            const FilmEffects& effects,
+            const ContactSolids& solids,
+            const LineContactSolver::Options& options);
 
   // The frozen fields the Reynolds system reads (null when the effect is off) [K], [-].
   const Eigen::MatrixXd* temperature() const { return thermal_ ? &t_.t_k : nullptr; }
@@ -74,8 +76,11 @@ class FilmField {
   // dt_s <= 0, else implicit Euler from `previous`, whose p, h and temperature give dp/dt,
   // dh/dt and the old level) with the shear heating of eta(p, T) iterated to a fixed point
   // (Anderson-accelerated, damped by `relaxation`).
-  EnergyUpdate UpdateTemperature(const ContactConditions& c, const FilmState& s,
-                                 const FilmState* previous, double dt_s, double relaxation);
+  EnergyUpdate UpdateTemperature(const ContactConditions& c,
+                                 const FilmState& s,
+                                 const FilmState* previous,
+                                 double dt_s,
+                                 double relaxation);
 
   // Writes the current temperature into the state (thermal runs).
   void Store(FilmState* s) const;
@@ -85,8 +90,8 @@ class FilmField {
 
  private:
   // eta_eff(x_i, xi_j) [Pa s] at the state's pressure with the current fields.
-  void NodeViscosity(const ContactConditions& c, const FilmState& s, int i, double* eta,
-                     bool newtonian) const;
+  void NodeViscosity(
+      const ContactConditions& c, const FilmState& s, int i, double* eta, bool newtonian) const;
   double Slope(const Eigen::VectorXd& p, int i) const;  // dp/dx at node i [Pa/m]
   void Energy(double t0_k);
 
@@ -97,17 +102,23 @@ class FilmField {
   LineContactSolver::Options opt_;
   int nz_;
   bool thermal_, eyring_;
-  FilmTemperature t_;          // thermal only
-  Eigen::MatrixXd factor_;     // Eyring only
+  FilmTemperature t_;       // thermal only
+  Eigen::MatrixXd factor_;  // Eyring only
   std::unique_ptr<FilmEnergySolver> energy_;
-  AndersonMixer outer_{5};  // the coupling iteration, reset by Begin
+  AndersonMixer outer_{5};    // the coupling iteration, reset by Begin
   int inner_iterations_ = 1;  // energy solves per coupling iteration
+  // The last coupling change of the temperature [K]; sets how far each energy solve needs
+  // to converge (a tenth of it, no less than the energy solver's own tolerance).
+  double last_change_k_ = kFirstCouplingChangeK;
+  static constexpr double kFirstCouplingChangeK = 5.0;  // [K], assumed before the first
 };
 
 // Friction of a film with eta(x_i, xi_j) given per node by `viscosity(i, eta)` over nz
 // cross-film nodes (seed 004 eq. 16).
-FilmFriction IntegrateFriction(const UniformGrid& grid, const FilmState& s,
-                               const ContactConditions& c, int nz,
+FilmFriction IntegrateFriction(const UniformGrid& grid,
+                               const FilmState& s,
+                               const ContactConditions& c,
+                               int nz,
                                const std::function<void(int, double*)>& viscosity);
 
 }  // namespace tehl::internal

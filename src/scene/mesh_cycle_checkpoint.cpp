@@ -9,7 +9,7 @@
 namespace tehl::internal {
 namespace {
 
-constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '1'};
+constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '2'};
 
 // Sequential binary writer / reader of the few types a checkpoint holds.
 class Out {
@@ -189,6 +189,7 @@ void WriteCheckpoint(const std::string& path, const MeshCycleCheckpoint& c) {
   o.V(c.history.q2);
   o.F(c.history.dt_prev_s);
   PutConditions(o, c.history.c_prev);
+  o.M(c.history.t_prev_k);
 
   const std::string tmp = path + ".part";
   {
@@ -229,6 +230,7 @@ std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path) {
     c.history.q2 = in.E();
     c.history.dt_prev_s = in.F();
     c.history.c_prev = GetConditions(in);
+    c.history.t_prev_k = in.M();
     if (!in.done()) return std::nullopt;
     return c;
   } catch (const std::exception&) {

@@ -65,8 +65,8 @@ struct FilmFlowField {
   // heating is heating_w_m3 itself, so a coupling that converges T_ref -> T is unaffected.
   Eigen::MatrixXd heating_decay_1_k;      // n x nz: >= 0; empty = 0 [1/K]
   Eigen::MatrixXd heating_reference_t_k;  // n x nz: T_ref; > 0, needed with the decay [K]
-  double u1_m_s = 0;             // speed of surface 1 in +x; > 0 with moving solids [m/s]
-  double u2_m_s = 0;             // speed of surface 2 in +x; > 0 with moving solids [m/s]
+  double u1_m_s = 0;                      // speed of surface 1 in +x; > 0 with moving solids [m/s]
+  double u2_m_s = 0;                      // speed of surface 2 in +x; > 0 with moving solids [m/s]
 };
 
 // Temperatures and wall heat fluxes: the solution, the previous time level, the initial guess.
@@ -162,6 +162,13 @@ class FilmEnergySolver {
   Summary Solve(const FilmFlowField& flow,
                 const FilmTemperature* previous,
                 double dt_s,
+                FilmTemperature* t) const;
+  // The same with tolerance_k [K] (> 0) in place of Options::tolerance_k: an outer coupling
+  // loop solves loosely while its own iterate still moves by much more (inexact solves).
+  Summary Solve(const FilmFlowField& flow,
+                const FilmTemperature* previous,
+                double dt_s,
+                double tolerance_k,
                 FilmTemperature* t) const;
 
  private:

@@ -182,6 +182,7 @@ class LineContactSolver {
     Eigen::VectorXd q1, q2;        // rho_e h at t_{n-1}, t_{n-2} [kg/m^2]
     double dt_prev_s = 0;          // t_{n-1} - t_{n-2} [s]
     ContactConditions c_prev;      // conditions at t_{n-1}
+    Eigen::MatrixXd t_prev_k;      // film temperature at t_{n-2}, n x nz (thermal) [K]
   };
   TransientHistory SaveTransient() const;
   void RestoreTransient(const TransientHistory& h);
