@@ -27,21 +27,23 @@ SceneRow RunStudyScene(const Study& study, const StudyScene& scene, bool resume)
   }
   const auto t0 = std::chrono::steady_clock::now();
   try {
+    // The row of a finished scene comes from its result file alone (wall time included: the
+    // HDF5 wall_time of a mesh cycle, the sum of the steps' wall_time_s of a contact case), so
+    // --resume rebuilds exactly the row written here.
     if (study.gear) {
       MeshCycleRunOptions o;
       o.quiet = true;
       o.output_dir = study.ScenesDir();
       RunMeshCycle(scene.case_path, o);
-      return ReadSceneRow(study, scene);
+    } else {
+      ContactRunOptions o;
+      o.quiet = true;
+      o.output_dir = study.ScenesDir();
+      RunContactCase(scene.case_path, o);
     }
-    ContactRunOptions o;
-    o.quiet = true;
-    o.output_dir = study.ScenesDir();
-    RunContactCase(scene.case_path, o);
-    SceneRow r = ReadSceneRow(study, scene);
-    r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return r;
+    return ReadSceneRow(study, scene);
   } catch (const std::exception& e) {
+    // No result file: the time spent until the failure.
     SceneRow r = FailedSceneRow(scene, e.what());
     r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return r;
