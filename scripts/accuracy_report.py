@@ -15,8 +15,8 @@ own process, N at a time):
 The error of each quantity is relative to the finest converged run of its series (the
 reference); for
 the grid series the observed order and a Richardson estimate of the reference's own error are
-given from the three finest grids. Times: the result file's wall_time (mesh cycle) and the
-CPU time (user + system) of the process from wait4; on a loaded machine the CPU time is the
+given from the three finest grids. Times: the result file's wall time (the HDF5 wall_time of
+a mesh cycle, the sum of the wall_time_s column of a disc's _steps.csv) and the CPU time (user + system) of the process from wait4; on a loaded machine the CPU time is the
 stable measure, so the Pareto plot and the relative costs use it.
 --reuse reads results of an earlier run from the scratch folder instead of running again.
 """
@@ -118,6 +118,30 @@ def run_one(tehl, case):
     return info
 
 
+def read_contact_steps(path):
+    """Summaries of a [contact] run's NAME_steps.csv (columns in docs/results.md): the film at
+    the last step; max over the steps of t_max_k, mean of mu (the cycle's definitions); the
+    wall time the sum of the steps' wall_time_s. A file without those columns (written before
+    they existed) gives None for them; a file without steps gives None."""
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        return None
+    last = rows[-1]
+    head = rows[0].keys()
+
+    def column(name):
+        return [float(r[name]) for r in rows] if name in head else None
+
+    t_max, mu, wall = column("t_max_k"), column("mu"), column("wall_time_s")
+    return {"h_min": float(last["h_min_m"]), "h_c": float(last["h_c_m"]),
+            "p_max": float(last["p_max_pa"]),
+            "T_max": max(t_max) if t_max else None,
+            "mu": sum(mu) / len(mu) if mu else None,
+            "wall_s": sum(wall) if wall else None,
+            "steps_run": len(rows) - 1}
+
+
 def read_result(info):
     """Summaries of one run: the seed's quantities and the times."""
     stem = info["case"][:-5]
@@ -138,17 +162,9 @@ def read_result(info):
             row["ok"] = str(f.attrs["converged"]) in ("true", "b'true'")
         return row
     steps = stem + "_steps.csv"
-    if os.path.isfile(steps):
-        with open(steps) as f:
-            rows = list(csv.DictReader(f))
-        last = rows[-1]
-        row["h_min"] = float(last["h_min_m"])
-        row["h_c"] = float(last["h_c_m"])
-        row["p_max"] = float(last["p_max_pa"])
-        row["T_max"] = float(last["t_max_k"]) if "t_max_k" in last else None
-        row["mu"] = float(last["mu"]) if "mu" in last else None
-        row["wall_s"] = None
-        row["steps_run"] = len(rows) - 1
+    summary = read_contact_steps(steps) if os.path.isfile(steps) else None
+    if summary is not None:
+        row.update(summary)
         row["ok"] = info["rc"] == 0
         return row
     row.update({q: None for q, _ in QUANTITIES})
@@ -275,12 +291,16 @@ def combinations(case_name, rows_by_series):
                 continue
             errs = {q: (0.0 if r is ref else rel_error(r[q], ref[q])) for q, _ in QUANTITIES
                     if ref[q] is not None}
+            # A quantity missing from a run (a result file of an earlier format) is left out.
+            errs = {q: e for q, e in errs.items() if e is not None}
             opts.append((errs, r["cpu_s"] / base["cpu_s"]))
         options.append(opts)
     base_cpu = next(r for r in rows_by_series[SERIES[case_name][0][0]] if r["is_base"])["cpu_s"]
     out = []
     for combo in itertools.product(*options):
-        qs = combo[0][0].keys()
+        qs = set.intersection(*(set(o[0]) for o in combo))
+        if not qs:
+            continue
         err = max(sum(o[0][q] for o in combo) for q in qs)
         out.append((base_cpu * float(np.prod([o[1] for o in combo])), err))
     return out
@@ -428,8 +448,9 @@ def write_markdown(a, data, effects, elapsed, load_before, load_after):
     md.append("- **disc**: `cases/disc_steady.toml` (steel discs, R = 10 mm, SAE 40, "
               "100 kN/m, p_H = 0.60 GPa) with sliding (u1 = 1.2, u2 = 0.8 m/s, SRR 0.4), "
               "thermal and Ree-Eyring, steady; base 257 nodes, 11 film nodes, tolerance 1e-8. "
-              "The [contact] result (`_steps.csv`) has no T_max and mu and no wall_time "
-              "attribute: those columns are '-', the time is the process's.")
+              "Quantities from the [contact] result (`_steps.csv`): h_min, h_c and p_max of "
+              "the (single) steady step, max of `t_max_k`, mean of `mu`; the wall time is the "
+              "sum of its `wall_time_s` column (the solve only).")
     md.append("- One setting varied at a time, the others at the base. The error is relative "
               "to the finest converged run of the same series (the reference, 'ref'); a run "
               "that did not converge has no error ('-'). For the grid the Richardson "
