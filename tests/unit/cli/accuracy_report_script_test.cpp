@@ -22,8 +22,7 @@ namespace fs = std::filesystem;
 
 // True when /usr/bin/python3 can import what accuracy_report.py imports.
 bool PythonReady() {
-  return std::system("/usr/bin/python3 -c 'import h5py, matplotlib, numpy' >/dev/null 2>&1") ==
-         0;
+  return std::system("/usr/bin/python3 -c 'import h5py, matplotlib, numpy' >/dev/null 2>&1") == 0;
 }
 
 // Runs `call` (a Python expression giving a dict or None) with accuracy_report imported as `a`
@@ -77,8 +76,9 @@ TEST(AccuracyReport, ContactStepsAreSummarizedLikeTheCycle) {
 // as '-' in the report); a file with a header only is no result.
 TEST(AccuracyReport, ContactStepsWithoutTheNewColumnsGiveNone) {
   if (!PythonReady()) GTEST_SKIP() << "/usr/bin/python3 without h5py, matplotlib or numpy";
-  const std::string header = "t_s,w_n_per_m,u1_m_s,u2_m_s,h_min_m,h_c_m,p_max_pa,"
-                             "newton_iterations,termination\n";
+  const std::string header =
+      "t_s,w_n_per_m,u1_m_s,u2_m_s,h_min_m,h_c_m,p_max_pa,"
+      "newton_iterations,termination\n";
   const std::string csv = testing::UniqueTempPath("old_steps.csv");
   std::ofstream(csv) << header << "0.0,1e5,1,1,3.0e-7,4.0e-7,6.0e8,12,converged\n";
   const auto m = CallScript("a.read_contact_steps('" + csv + "')");
