@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "base/schema.hpp"
 #include "ehl/cross_film.hpp"
 #include "tehl/error.hpp"
 #include "tehl/lubricant/lubricant.hpp"
@@ -148,7 +149,7 @@ void FilmField::Begin(const ContactConditions& c, const FilmState& s) {
   outer_ = AndersonMixer(5);
   last_change_k_ = kFirstCouplingChangeK;
   if (thermal_) {
-    if (s.temperature.Matches(n, nz_)) {
+    if (s.temperature.Matches(n, nz_) && s.temperature.t_k.allFinite()) {
       t_ = s.temperature;
     } else {
       Energy(c.temperature_k);
@@ -309,8 +310,8 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
         if (!next.t_k.allFinite())
           out.summary.message = "the energy equation gave a non-finite temperature";
         else if (out.summary.usable())
-          out.summary.message = "the film temperature rises more than " +
-                                std::to_string(kMaxRiseK) + " K even with the heating cut";
+          out.summary.message = "the film temperature rises more than " + FormatReal(kMaxRiseK) +
+                                " K even with the heating cut";
         return out;
       }
       scale *= 0.3;
@@ -325,7 +326,7 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
     t_.q1_w_m2 = next.q1_w_m2;
     t_.q2_w_m2 = next.q2_w_m2;
     if (change < inner_tolerance || out.limited) {
-      t_.t_k = next.t_k;
+      t_.t_k = next.t_k.cwiseMax(0.8 * c.temperature_k);
     } else {
       t_.t_k = mixer.Mix(t_.t_k, next.t_k, relaxation)
                    .cwiseMax(0.8 * c.temperature_k)
@@ -356,7 +357,7 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
   out.ok = change < inner_tolerance || inner_max == 1;
   if (!out.ok)
     out.summary.message = "the film temperature at fixed pressure did not settle (change " +
-                          std::to_string(change) + " K)";
+                          FormatReal(change) + " K)";
   return out;
 }
 

@@ -771,7 +771,16 @@ class LineContactSolver::Impl {
       change_f = field_->UpdateRheology(c, *s);
       change_t = 0.0;
       if (eff_.thermal) {
-        const auto e = field_->UpdateTemperature(c, *s, previous, dt_s, opt_.thermal_relaxation);
+        // The energy solver checks its inputs and throws on a malformed flow field; inside a
+        // coupling that can only come from a diverging iterate, which is a failed solve, not
+        // bad input.
+        internal::FilmField::EnergyUpdate e;
+        try {
+          e = field_->UpdateTemperature(c, *s, previous, dt_s, opt_.thermal_relaxation);
+        } catch (const std::exception& ex) {
+          e.ok = false;
+          e.summary.message = ex.what();
+        }
         balance = e.summary.balance.RelativeError();
         change_t = e.max_change_k;
         if (!e.ok) {

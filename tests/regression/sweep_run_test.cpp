@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "regression/sweep_support.hpp"
+#include "support/csv_cells.hpp"
 #include "tehl/scene/mesh_cycle_scene.hpp"
 #include "unit/cli/run_tehl.hpp"
 
@@ -31,22 +32,7 @@ std::string OutDir(const std::string& study) {
   return (fs::path(study).parent_path() / "out").string();
 }
 
-// index.csv text as header and rows of cells (the cells of these studies hold no commas).
-std::vector<std::vector<std::string>> CsvCells(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty()) continue;
-    rows.emplace_back(1);
-    for (char c : line) {
-      if (c == ',')
-        rows.back().emplace_back();
-      else
-        rows.back().back() += c;
-    }
-  }
-  return rows;
-}
+using testing::CsvCells;
 
 TEST(Sweep, IndexEqualsTheScenesRunOneByOne) {
   const std::string study = testing::ReducedStudy(

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "support/csv_cells.hpp"
 #include "unit/cli/run_tehl.hpp"
 
 namespace tehl {
@@ -75,22 +76,7 @@ TEST(StudyIndex, ContactStepsWithTheNewColumnsAreSummarized) {
   EXPECT_EQ(r.wall_time_s, 0.875);
 }
 
-// index.csv as header and rows of cells (no quoted cells in this study).
-std::vector<std::vector<std::string>> ReadCsvCells(const std::string& path) {
-  std::vector<std::vector<std::string>> rows;
-  std::ifstream in(path);
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty()) continue;
-    rows.emplace_back(1);
-    for (char c : line) {
-      if (c == ',')
-        rows.back().emplace_back();
-      else
-        rows.back().back() += c;
-    }
-  }
-  return rows;
-}
+using testing::ReadCsvCells;
 
 size_t Column(const std::vector<std::string>& head, const std::string& name) {
   const auto it = std::find(head.begin(), head.end(), name);
