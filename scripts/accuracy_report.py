@@ -457,11 +457,11 @@ def write_markdown(a, data, effects, elapsed, load_before, load_after):
               "estimate below each table says how far that reference itself is from the grid "
               "limit. The thermal coupling tolerance (0.01 K) has no case key and is not "
               "varied.")
-    md.append("- Why the Ree-Eyring film: with the Newtonian film the thermal coupling of "
-              "this version does not converge on the seed 004 cycle at 513 and 1025 nodes or "
-              "with 7 film nodes, nor on the sliding disc (SRR >= 0.1) and the transient disc "
-              "load step; the Newtonian model therefore cannot be refined to a reference "
-              "(docs/studies.md, 'Known problems').\n")
+    md.append("- Why the Ree-Eyring film: it is the film model of the shipped studies, and "
+              "the Newtonian thermal film does not converge on the sliding disc (SRR >= 0.2; "
+              "docs/thermal.md, 'Open points'), so the disc series could not use it. The "
+              "Newtonian seed 004 cycle itself converges at 513 and 1025 nodes and with 21 "
+              "film nodes (docs/thermal.md, 'The seed 004 cycle at full resolution').\n")
     md.append("## Settings\n")
     for case_name in ["cycle", "disc"]:
         md += series_tables(case_name, data[case_name])
