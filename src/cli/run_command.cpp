@@ -1,5 +1,6 @@
 // tehl run CASE: runs a case. A [gear] case runs the mesh cycle from A to E (HDF5 result and
 // CSV of the cycle table); a [contact] case runs the plain line contact (CSV files).
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -37,6 +38,15 @@ int RunGear(const RunArgs& a) {
               r.planned_steps, r.step_rule.c_str(), r.x_m.size(), r.wall_time_s);
   std::printf("at the pitch point (s = %.4g mm): h_c = %.6g m, h_min = %.6g m, p_max = %.6g Pa\n",
               pitch.s_m * 1e3, pitch.h_c_m, pitch.h_min_m, pitch.p_max_pa);
+  if (r.thermal) {  // the hottest step and the mean friction along the path
+    const auto hottest =
+        std::max_element(r.steps.begin(), r.steps.end(),
+                         [](const auto& a, const auto& b) { return a.t_max_k < b.t_max_k; });
+    double mu = 0;
+    for (const auto& k : r.steps) mu += k.friction_coefficient;
+    std::printf("thermal: T_max = %.5g K at s = %.4g mm (SRR %+.3f), mean mu = %.4g\n",
+                hottest->t_max_k, hottest->s_m * 1e3, hottest->srr, mu / r.steps.size());
+  }
   std::printf("wrote %s%s%s\n", r.hdf5_path.c_str(), r.csv_path.empty() ? "" : " and ",
               r.csv_path.c_str());
   if (!r.converged()) {
