@@ -17,9 +17,7 @@ namespace {
 
 constexpr double kEyringRelaxation = 0.5;
 constexpr double kMaxRiseK = 400.0;  // largest film temperature rise accepted [K]
-constexpr int kHeatingCuts = 8;
-constexpr double kMaxStepK = 30.0;  // largest film temperature change per energy solve [K]      //
-                                    // heating scalings tried per energy solve [-]
+constexpr int kHeatingCuts = 8;      // heating scalings tried per energy solve [-]
 
 // Ree-Eyring shear rate with an optional limiting shear stress [1/s].
 struct EyringLaw {
