@@ -70,6 +70,7 @@ std::vector<std::string> FilmEnergySolver::Options::Validate() const {
   rule(max_iterations >= 1, "max_iterations", max_iterations, ">= 1");
   rule(relaxation > 0 && relaxation <= 1, "relaxation", relaxation, "in (0, 1]");
   rule(max_chord_steps >= 1, "max_chord_steps", max_chord_steps, ">= 1");
+  rule(history_near_cells >= 0, "history_near_cells", history_near_cells, ">= 0");
   return bad;
 }
 
@@ -232,7 +233,8 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
   }
   if (!t->Matches(n, nz)) *t = Initial();
   if (!system_ || !options_.reuse_factorization)
-    system_ = std::make_unique<internal::FilmEnergySystem>(grid_, nz, source_);
+    system_ = std::make_unique<internal::FilmEnergySystem>(grid_, nz, source_,
+                                                           options_.history_near_cells);
   internal::FilmEnergySystem& system = *system_;
 
   // Lubricant properties: k(p) per column, rho(p, T) per node at the current iterate.
@@ -246,6 +248,8 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
   Summary s;
   s.message = "";
   double last_change = std::numeric_limits<double>::infinity();
+  bool last_fresh_exact = false;  // the previous step had a fresh factorization of the full A
+  int poor_after_exact = 0;       // poor steps right after one
   for (int it = 1; it <= options_.max_iterations; ++it) {
     bool linear = true;
     for (int i = 0; i < n; ++i)
@@ -264,6 +268,7 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
       ++s.factorizations;
       return system.Factorize(exact);
     };
+    const bool after_exact = last_fresh_exact;
     // First the cheap factorization without the reverse-flow couplings (exact when there is
     // no reverse flow).
     if (!system.HasFactorization()) ok = factorize(false);
@@ -276,6 +281,11 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
     const bool poor =
         !ok || r >= 1 || ChordStepsToGo(change, r, tolerance_k) > options_.max_chord_steps;
     if (poor && !(fresh && system.factorized_exact())) {
+      // Poor twice right after a factorization of the full sparse A: what converges slowly is
+      // the far history lagged outside A (a solid strongly coupled to the film), so A takes
+      // all of it from now on.
+      if (after_exact && system.lags_far_history() && ++poor_after_exact >= 2)
+        system.KeepWholeHistory(in);
       ok = factorize(true) && system.Correction(x, &delta);
       if (ok) change = ChangeOfTemperatures(delta, n, nz);
       r = 0;
@@ -286,10 +296,11 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
       break;
     }
     s.iterations = it;
+    last_fresh_exact = fresh && system.factorized_exact();
     x += options_.relaxation * delta;
     system.Unpack(x, t0_, t);
     // Nothing depends on T when d rho/dT = 0: a step with a fresh factorization is the solution.
-    const bool exact_step = fresh && system.factorized_exact();
+    const bool exact_step = fresh && system.factorized_exact() && !system.lags_far_history();
     s.max_change_k = (linear && exact_step && options_.relaxation == 1.0) ? 0.0 : change;
     last_change = change;
     // Remaining error of a contraction r after a step of size `change`: change r / (1 - r).

@@ -22,13 +22,18 @@ struct FilmEnergySystem::Klu {
   }
 };
 
-FilmEnergySystem::FilmEnergySystem(const UniformGrid& grid, int nz, const MovingHeatSource& source)
+FilmEnergySystem::FilmEnergySystem(const UniformGrid& grid,
+                                   int nz,
+                                   const MovingHeatSource& source,
+                                   int near_cells)
     : n_(grid.size()),
       nz_(nz),
       block_(nz + 2),
       dx_(grid.dx_m()),
       dxi_(1.0 / (nz - 1)),
       source_(source),
+      far_(source, near_cells),
+      far_y_(grid.size()),
       klu_(std::make_unique<Klu>()) {}
 
 FilmEnergySystem::~FilmEnergySystem() = default;
@@ -180,6 +185,11 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
     for (int j = 0; j < nz_; ++j) rhs_[i * block_ + j] = b_(i, j);
 }
 
+void FilmEnergySystem::KeepWholeHistory(const FilmEnergyInputs& in) {
+  lag_far_ = false;
+  BuildMatrix(in);
+}
+
 bool FilmEnergySystem::HasFactorization() const { return klu_->numeric != nullptr; }
 
 bool FilmEnergySystem::Factorize(bool exact) {
@@ -249,6 +259,14 @@ bool FilmEnergySystem::Correction(const Eigen::VectorXd& x, Eigen::VectorXd* del
   *delta = Eigen::Map<const Eigen::VectorXd>(rhs_.data(), rhs_.size());
   for (int c = 0; c + 1 < static_cast<int>(col_ptr_.size()); ++c)
     for (int e = col_ptr_[c]; e < col_ptr_[c + 1]; ++e) (*delta)[row_idx_[e]] -= values_[e] * x[c];
+  // The far history, outside A: surface rows T_s - T0 - F sum G q = 0, so b - A x gains
+  // +F/dx sum_far G s.
+  if (lags_far_history())
+    for (int s = 0; s < 2; ++s) {
+      far_.Apply(x.data() + nz_ + s, block_, far_y_.data());
+      const double f = (s == 0 ? built_factor1_ : built_factor2_) / dx_;
+      for (int i = 0; i < n_; ++i) (*delta)[i * block_ + nz_ + s] += f * far_y_[i];
+    }
   if (!klu_solve(k.symbolic, k.numeric, static_cast<int>(delta->size()), 1, delta->data(),
                  &k.common))
     return false;
@@ -294,7 +312,9 @@ void FilmEnergySystem::BuildMatrix(const FilmEnergyInputs& in) {
       signature[2 * (i * nz_ + j) + 1] = aw_(i, j) != 0;
     }
   signature.back() = in.fixed_walls;
-  const bool in_place = !values_.empty() && signature == signature_ &&
+  moving_walls_ = !in.fixed_walls;
+  const int near = lag_far_ ? far_.near_cells() : n_;
+  const bool in_place = !values_.empty() && signature == signature_ && near == built_near_ &&
                         in.factor1 == built_factor1_ && in.factor2 == built_factor2_;
   const int size = n_ * block_;
   size_t cursor = 0;
@@ -305,6 +325,7 @@ void FilmEnergySystem::BuildMatrix(const FilmEnergyInputs& in) {
     signature_ = signature;
     built_factor1_ = in.factor1;
     built_factor2_ = in.factor2;
+    built_near_ = near;
   }
   auto put = [&](int row, double v) {
     if (in_place) {
@@ -337,7 +358,9 @@ void FilmEnergySystem::BuildMatrix(const FilmEnergyInputs& in) {
         continue;
       }
       const double factor = s == 0 ? in.factor1 : in.factor2;
-      for (int ii = std::max(i, 1); ii < n_; ++ii)  // T_s(x_0) = T0: no weight at i' = 0
+      // The near band only; T_s(x_0) = T0: no weight at i' = 0.
+      const int last = std::min(n_ - 1, i + near);
+      for (int ii = std::max(i, 1); ii <= last; ++ii)
         put(ii * block_ + nz_ + s, -factor * source_.Weight(ii, i) / dx_);
     }
   }
@@ -353,8 +376,8 @@ EnergyBalance FilmEnergySystem::Balance(const FilmEnergyInputs& in,
   for (int i = 0; i < n_; ++i)
     for (int j = 0; j < nz_; ++j) {
       const double theta = t(i, j) - t0;
-      e.shear_w_m += heat_(i, j) * (1 - heat_slope_(i, j) * (t(i, j) - heat_t_(i, j))) *
-                     volume_(i, j);
+      e.shear_w_m +=
+          heat_(i, j) * (1 - heat_slope_(i, j) * (t(i, j) - heat_t_(i, j))) * volume_(i, j);
       const double tc = std::isnan(comp_explicit_t_(i, j)) ? t(i, j) : comp_explicit_t_(i, j);
       e.compression_w_m += compression_(i, j) * volume_(i, j) * tc;
       e.stored_w_m += cp * theta * dmass_dt_(i, j);

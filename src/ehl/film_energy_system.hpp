@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "ehl/far_history.hpp"
 #include "tehl/ehl/film_energy.hpp"
 
 namespace tehl::internal {
@@ -27,7 +28,9 @@ struct FilmEnergyInputs {
 // s_i = q_i dx (the wall flux scaled to the size of a temperature coefficient).
 class FilmEnergySystem {
  public:
-  FilmEnergySystem(const UniformGrid& grid, int nz, const MovingHeatSource& source);
+  // near_cells: the lags of the moving-heat-source history kept in A (0 <= i - k <= near_cells);
+  // the rest enters the residual by FFT and is lagged by the factorization.
+  FilmEnergySystem(const UniformGrid& grid, int nz, const MovingHeatSource& source, int near_cells);
   ~FilmEnergySystem();
 
   // Assembles A and b with the properties evaluated at t_iter (n x nz): rho, drho/dT,
@@ -44,8 +47,15 @@ class FilmEnergySystem {
   // numeric one refactored in the old pivot order. False if KLU fails.
   bool Factorize(bool exact);
   bool HasFactorization() const;
-  // Whether the last factorization was of the full A (true also when A has no reverse flow).
+  // Whether the last factorization was of the full sparse A (true also when A has no reverse
+  // flow).
   bool factorized_exact() const { return factorized_exact_; }
+  // Whether A (assembled) leaves a far history out: then even a factorization of the full A
+  // is a chord step, and a step is exact only when this is false.
+  bool lags_far_history() const { return moving_walls_ && lag_far_ && !far_.empty(); }
+  // From now on the whole history in A (none lagged): for a solid so strongly coupled to the
+  // film that the lagged far part converges slowly. Rebuilds the assembled matrix for `in`.
+  void KeepWholeHistory(const FilmEnergyInputs& in);
   // delta = A_f^-1 (b - A x) with A_f the last factorized matrix. False if KLU fails or delta
   // is not finite.
   bool Correction(const Eigen::VectorXd& x, Eigen::VectorXd* delta) const;
@@ -68,6 +78,11 @@ class FilmEnergySystem {
   int n_, nz_, block_;
   double dx_, dxi_;
   MovingHeatSource source_;
+  FarHistory far_;
+  mutable std::vector<double> far_y_;  // work array of the far history [m^(1/2) m]
+  bool moving_walls_ = false;
+  bool lag_far_ = true;  // false after KeepWholeHistory
+  int built_near_ = -1;  // the near band of the built matrix [cells]
   // Per cell (n x nz): volume, mass, dM/dt, x-face mass flux on the west face (n+1 rows:
   // row i = face i - 1/2), cross-film flux through the north face (from j to j+1).
   Eigen::MatrixXd volume_, mass_, dmass_dt_, fx_, gz_;

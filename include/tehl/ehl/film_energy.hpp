@@ -116,6 +116,9 @@ class FilmEnergySolver {
     // factorization, as the coupling loop of a pressure solver re-solves a slowly changing
     // flow; false = a fresh factorization (without reverse flow) in every Solve.
     bool reuse_factorization = true;
+    // Lags i - k <= this of the surface-temperature history kept in the factorized matrix, the
+    // rest applied by FFT and lagged (all of it in the matrix if that converges slowly) [cells].
+    int history_near_cells = 16;                // >= 0 [-]
     int max_chord_steps = 20;                   // >= 1 [-]
     std::vector<std::string> Validate() const;  // every violated rule; empty = valid
   };

@@ -1,0 +1,48 @@
+// The far part of the moving-heat-source history (include/tehl/ehl/surface_temperature.hpp)
+// applied by FFT. The history sum_{k <= i} G_ik s_k is a causal convolution on the uniform grid
+// (G_ik depends only on i - k for k >= 1; the inlet half cell k = 0 has its own weights). The
+// film energy system keeps its near part, 0 <= i - k <= near_cells, as sparse matrix entries
+// and needs the rest, the far part
+//   y_i = sum_{k : i - k > near_cells} G_ik s_k,
+// in its residual: O(n log n) by a zero-padded real FFT instead of O(n^2) sums.
+// Private to the film energy system (src/ehl/film_energy_system.hpp).
+#pragma once
+
+#include <complex>
+#include <memory>
+#include <vector>
+
+#include "tehl/ehl/surface_temperature.hpp"
+
+namespace tehl::internal {
+
+class FarHistory {
+ public:
+  // near_cells >= 0: the lags kept out of the far part. Builds the FFTW plans (under the
+  // process-wide planner lock) and the kernel's spectrum once.
+  FarHistory(const MovingHeatSource& source, int near_cells);
+  ~FarHistory();
+  FarHistory(const FarHistory&) = delete;
+  FarHistory& operator=(const FarHistory&) = delete;
+
+  int size() const { return n_; }
+  int near_cells() const { return near_; }
+  int fft_size() const { return m_; }
+  // True when every lag is near (n - 1 <= near_cells): the far part is identically zero.
+  bool empty() const { return near_ >= n_ - 1; }
+  // y_i (i = 0..n-1) for s_k = s[k * stride] [unit of s times m^(1/2)]. Uses the object's
+  // buffers: one FarHistory per thread.
+  void Apply(const double* s, int stride, double* y) const;
+  // The same by the direct O(n^2) sum (the reference of the tests).
+  void ApplyDirect(const double* s, int stride, double* y) const;
+
+ private:
+  struct Plans;
+  int n_ = 0, near_ = 0, m_ = 0;
+  std::vector<double> inlet_;                     // G_i0 for i > near_cells, else 0 [m^(1/2)]
+  std::vector<std::complex<double>> kernel_hat_;  // spectrum of the far kernel / m
+  MovingHeatSource source_;
+  std::unique_ptr<Plans> plans_;  // null when empty()
+};
+
+}  // namespace tehl::internal

@@ -1,0 +1,78 @@
+// The far part of the moving-heat-source history by FFT (src/ehl/far_history.hpp) against the
+// direct O(n^2) sum of the exact cell weights (include/tehl/ehl/surface_temperature.hpp), and
+// near + far = the whole history of MovingHeatSource::Rise.
+#include "ehl/far_history.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+namespace tehl::internal {
+namespace {
+
+const SolidThermal kBronze{7890.0, 375.0, 55.0};  // VALIDATION.md section 5, UNS C61300
+
+// Samples s_k at stride 3 (the layout of the energy unknowns), random signs and sizes.
+std::vector<double> Samples(int n, int stride, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 3.0);
+  std::vector<double> s(static_cast<size_t>(n) * stride, -7.0);  // gaps must not be read
+  for (int k = 0; k < n; ++k) s[static_cast<size_t>(k) * stride] = 1e7 * u(rng);
+  return s;
+}
+
+TEST(FarHistory, FftEqualsTheDirectSumToRoundOff) {
+  // Reference: the direct sum over i - k > near of the exact weights. Tolerance 1e-12 of the
+  // largest value: the transform's round-off is ~eps log2(m) times the norm.
+  for (int n : {5, 6, 17, 257, 513, 1000}) {  // UniformGrid needs n >= 5
+    const MovingHeatSource source(UniformGrid(-3e-4, 1e-4, n));
+    for (int near : {0, 1, 16, n - 3, n - 2, n - 1, n + 5}) {
+      if (near < 0) continue;
+      const FarHistory far(source, near);
+      const std::vector<double> s = Samples(n, 3, 17u * n + near);
+      std::vector<double> fft(n, 1.0), direct(n, 1.0);
+      far.Apply(s.data(), 3, fft.data());
+      far.ApplyDirect(s.data(), 3, direct.data());
+      double scale = 0, err = 0;
+      for (int i = 0; i < n; ++i) {
+        scale = std::max(scale, std::abs(direct[i]));
+        err = std::max(err, std::abs(fft[i] - direct[i]));
+        if (i <= near) EXPECT_EQ(fft[i], 0.0) << n << " " << near << " " << i;  // no far lag
+      }
+      EXPECT_EQ(far.empty(), near >= n - 1);
+      if (far.empty()) EXPECT_EQ(scale, 0.0);
+      EXPECT_LE(err, 1e-12 * scale) << "n " << n << ", near " << near;
+      if (n == 513 && near == 16)
+        std::printf("n 513, near 16: FFT length %d, max error %.2e of %.3e\n", far.fft_size(), err,
+                    scale);
+    }
+  }
+}
+
+TEST(FarHistory, NearBandPlusFarPartIsTheWholeHistory) {
+  // Rise / F = sum_{k <= i} G_ik q_k (the O(n^2) sum of MovingHeatSource); the near band
+  // 0 <= i - k <= near summed from Weight plus the far part must give it back.
+  const int n = 300, near = 7;
+  const MovingHeatSource source(UniformGrid(-3e-4, 1e-4, n));
+  const std::vector<double> q = Samples(n, 1, 5u);
+  const Eigen::VectorXd qv = Eigen::Map<const Eigen::VectorXd>(q.data(), n);
+  const double speed = 2.0;
+  const Eigen::VectorXd whole =
+      source.Rise(kBronze, speed, qv) / MovingHeatSource::Factor(kBronze, speed);
+  const FarHistory far(source, near);
+  std::vector<double> y(n);
+  far.Apply(q.data(), 1, y.data());
+  const double scale = whole.cwiseAbs().maxCoeff();
+  for (int i = 0; i < n; ++i) {
+    double sum = y[i];
+    for (int k = std::max(0, i - near); k <= i; ++k) sum += source.Weight(i, k) * q[k];
+    EXPECT_NEAR(sum, whole[i], 1e-12 * scale) << i;
+  }
+}
+
+}  // namespace
+}  // namespace tehl::internal
