@@ -240,7 +240,7 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
   // Lubricant properties: k(p) per column, rho(p, T) per node at the current iterate.
   Eigen::VectorXd p = flow.p_pa.cwiseMax(0.0), k(n);
   for (int i = 0; i < n; ++i) k[i] = lubricant_->conductivity().Evaluate(p[i]).k_w_mk;
-  Eigen::MatrixXd rho(n, nz), drho_dt(n, nz), drho_dp(n, nz);
+  internal::CellMatrix rho(n, nz), drho_dt(n, nz), drho_dp(n, nz);
   Eigen::VectorXd x = system.Pack(*t, t0_), delta;
 
   // Picard on the temperature dependence of rho; each step x += w A_f^-1 (b(x) - A(x) x) with

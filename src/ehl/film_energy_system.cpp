@@ -40,9 +40,9 @@ FilmEnergySystem::~FilmEnergySystem() = default;
 
 void FilmEnergySystem::ComputeMassFluxes(const FilmEnergyInputs& in,
                                          const Eigen::MatrixXd& t_iter,
-                                         const Eigen::MatrixXd& rho,
-                                         const Eigen::MatrixXd& drho_dt,
-                                         const Eigen::MatrixXd& drho_dp) {
+                                         const CellMatrix& rho,
+                                         const CellMatrix& drho_dt,
+                                         const CellMatrix& drho_dp) {
   const FilmFlowField& f = *in.flow;
   const bool transient = in.dt_s > 0;
   volume_.resize(n_, nz_);
@@ -100,17 +100,17 @@ void FilmEnergySystem::ComputeMassFluxes(const FilmEnergyInputs& in,
 
 void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
                                 const Eigen::MatrixXd& t_iter,
-                                const Eigen::MatrixXd& rho,
-                                const Eigen::MatrixXd& drho_dt,
-                                const Eigen::MatrixXd& drho_dp,
+                                const CellMatrix& rho,
+                                const CellMatrix& drho_dt,
+                                const CellMatrix& drho_dp,
                                 const Eigen::VectorXd& k_w_mk) {
   const FilmFlowField& f = *in.flow;
   const double cp = in.cp_j_kgk;
   const bool transient = in.dt_s > 0;
   ComputeMassFluxes(in, t_iter, rho, drho_dt, drho_dp);
-  for (auto* m : {&ap_, &as_, &an_, &aw_, &ae_, &b_, &compression_, &comp_explicit_t_, &heat_,
-                  &heat_slope_, &heat_t_})
-    m->setZero(n_, nz_);
+  for (auto* m : {&ap_, &as_, &an_, &aw_, &ae_, &b_}) m->setZero(n_, nz_);
+  for (auto* m : {&compression_, &comp_explicit_t_, &heat_, &heat_slope_, &heat_t_})
+    m->resize(n_, nz_);  // every entry written below
   for (int i = 0; i < n_; ++i) {
     const double dxc = source_.CellLength(i);
     const double kappa = k_w_mk[i] * dxc / (f.h_m[i] * dxi_);  // conduction across the film

@@ -12,6 +12,10 @@
 
 namespace tehl::internal {
 
+// n x nz per-cell values, row-major: the assembly runs along the film nodes (j) of each grid
+// node (i).
+using CellMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
 // What the system needs besides the film: the fixed inputs of one Solve.
 struct FilmEnergyInputs {
   const FilmFlowField* flow = nullptr;
@@ -37,9 +41,9 @@ class FilmEnergySystem {
   // drho/dp at every node and k at every column, evaluated by the caller.
   void Assemble(const FilmEnergyInputs& in,
                 const Eigen::MatrixXd& t_iter,
-                const Eigen::MatrixXd& rho,
-                const Eigen::MatrixXd& drho_dt,
-                const Eigen::MatrixXd& drho_dp,
+                const CellMatrix& rho,
+                const CellMatrix& drho_dt,
+                const CellMatrix& drho_dp,
                 const Eigen::VectorXd& k_w_mk);
   // Factorizes the assembled A (exact), or A without the moving-heat-source history inside
   // recirculation zones (cheap: banded diagonal blocks; an approximate inverse for the chord
@@ -70,9 +74,9 @@ class FilmEnergySystem {
   struct Klu;
   void ComputeMassFluxes(const FilmEnergyInputs& in,
                          const Eigen::MatrixXd& t_iter,
-                         const Eigen::MatrixXd& rho,
-                         const Eigen::MatrixXd& drho_dt,
-                         const Eigen::MatrixXd& drho_dp);
+                         const CellMatrix& rho,
+                         const CellMatrix& drho_dt,
+                         const CellMatrix& drho_dp);
   void BuildMatrix(const FilmEnergyInputs& in);
 
   int n_, nz_, block_;
@@ -85,12 +89,12 @@ class FilmEnergySystem {
   int built_near_ = -1;  // the near band of the built matrix [cells]
   // Per cell (n x nz): volume, mass, dM/dt, x-face mass flux on the west face (n+1 rows:
   // row i = face i - 1/2), cross-film flux through the north face (from j to j+1).
-  Eigen::MatrixXd volume_, mass_, dmass_dt_, fx_, gz_;
+  CellMatrix volume_, mass_, dmass_dt_, fx_, gz_;
   // Coefficients of row (i, j): aP th_ij + aS th_i(j-1) + aN th_i(j+1) + aW th_(i-1)j
   // + aE th_(i+1)j (+ wall flux) = b, th = T - T0; compression c_ij and whether it was implicit.
-  Eigen::MatrixXd ap_, as_, an_, aw_, ae_, b_, compression_, comp_explicit_t_;
+  CellMatrix ap_, as_, an_, aw_, ae_, b_, compression_, comp_explicit_t_;
   // Heating g at the iterate heat_t_ and its decay rate: the source g (1 - slope (T - heat_t_)).
-  Eigen::MatrixXd heat_, heat_slope_, heat_t_;
+  CellMatrix heat_, heat_slope_, heat_t_;
   std::vector<int> col_ptr_, row_idx_;
   std::vector<double> values_, rhs_;
   std::vector<char> signature_;  // upwind pattern and wall model of the built matrix

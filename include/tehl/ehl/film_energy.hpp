@@ -118,7 +118,7 @@ class FilmEnergySolver {
     bool reuse_factorization = true;
     // Lags i - k <= this of the surface-temperature history kept in the factorized matrix, the
     // rest applied by FFT and lagged (all of it in the matrix if that converges slowly) [cells].
-    int history_near_cells = 16;                // >= 0 [-]
+    int history_near_cells = 4;                 // >= 0 [-]
     int max_chord_steps = 20;                   // >= 1 [-]
     std::vector<std::string> Validate() const;  // every violated rule; empty = valid
   };
