@@ -109,8 +109,17 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
   const bool transient = in.dt_s > 0;
   ComputeMassFluxes(in, t_iter, rho, drho_dt, drho_dp);
   for (auto* m : {&ap_, &as_, &an_, &aw_, &ae_, &b_}) m->setZero(n_, nz_);
-  for (auto* m : {&compression_, &comp_explicit_t_, &heat_, &heat_slope_, &heat_t_})
+  for (auto* m : {&compression_, &comp_explicit_t_, &heat_t_})
     m->resize(n_, nz_);  // every entry written below
+  // The heating and its decay rate at every cell at once (Eigen's vectorized exp).
+  if (f.heating_decay_1_k.size()) {
+    heat_slope_ = f.heating_decay_1_k;
+    heat_ = f.heating_w_m3.array() *
+            (-f.heating_decay_1_k.array() * (t_iter - f.heating_reference_t_k).array()).exp();
+  } else {
+    heat_slope_.setZero(n_, nz_);
+    heat_ = f.heating_w_m3;
+  }
   for (int i = 0; i < n_; ++i) {
     const double dxc = source_.CellLength(i);
     const double kappa = k_w_mk[i] * dxc / (f.h_m[i] * dxi_);  // conduction across the film
@@ -155,13 +164,7 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
       }
       // Heating g(T) = H exp(-beta (T - T_ref)), Newton-linearized about the iterate:
       // g(T_it) (1 - beta (T - T_it)); beta g V on the diagonal keeps it dominant.
-      double g = f.heating_w_m3(i, j), beta = 0;
-      if (f.heating_decay_1_k.size()) {
-        beta = f.heating_decay_1_k(i, j);
-        g *= std::exp(-beta * (t_iter(i, j) - f.heating_reference_t_k(i, j)));
-      }
-      heat_(i, j) = g;
-      heat_slope_(i, j) = beta;
+      const double g = heat_(i, j), beta = heat_slope_(i, j);
       heat_t_(i, j) = t_iter(i, j);
       ap += beta * g * volume_(i, j);
       b_(i, j) += g * volume_(i, j) * (1 + beta * (t_iter(i, j) - in.t0_k));
