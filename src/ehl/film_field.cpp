@@ -1,6 +1,5 @@
 #include "ehl/film_field.hpp"
 
-#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -16,7 +15,6 @@ namespace tehl::internal {
 namespace {
 
 constexpr double kEyringRelaxation = 0.5;
-constexpr double kMaxRiseK = 400.0;  // largest film temperature rise accepted [K]
 constexpr int kHeatingCuts = 8;      // heating scalings tried per energy solve [-]
 
 // Ree-Eyring shear rate with an optional limiting shear stress [1/s].
@@ -210,6 +208,92 @@ double FilmField::UpdateRheology(const ContactConditions& c, const FilmState& s)
   return change;
 }
 
+FilmFlowField FilmField::Flow(const ContactConditions& c,
+                              const FilmState& s,
+                              const FilmState* previous,
+                              double dt_s,
+                              const FilmTemperature** prev_t) const {
+  const int n = grid_.size();
+  FilmFlowField flow;
+  flow.p_pa = s.p_pa.cwiseMax(0.0);
+  flow.h_m = s.h_m;
+  flow.u1_m_s = c.u1_m_s;
+  flow.u2_m_s = c.u2_m_s;
+  flow.u_m_s.resize(n, nz_);
+  flow.heating_w_m3.resize(n, nz_);
+  flow.heating_decay_1_k.resize(n, nz_);
+  const bool transient = dt_s > 0 && previous && previous->valid();
+  if (transient) {
+    flow.dpdt_pa_s = (flow.p_pa - previous->p_pa.cwiseMax(0.0)) / dt_s;
+    flow.dhdt_m_s = (s.h_m - previous->h_m) / dt_s;
+  }
+  *prev_t =
+      transient && previous->temperature.Matches(n, nz_) ? &previous->temperature : nullptr;
+  return flow;
+}
+
+void FilmField::Heating(const ContactConditions& c,
+                        const FilmState& s,
+                        FilmFlowField* flow) const {
+  const int n = grid_.size();
+  std::vector<double> eta(nz_), u(nz_), tau(nz_), u_c(nz_), tau_c(nz_), pz(nz_), tz(nz_);
+  std::vector<ViscosityValue> visc(nz_);
+  for (int i = 0; i < n; ++i) {
+    const double slope = Slope(flow->p_pa, i);
+    NodeViscosity(c, s, i, eta.data(), false);
+    CrossFilmProfile(eta.data(), nz_, s.h_m[i], slope, c.u1_m_s, c.u2_m_s, u.data(), tau.data());
+    // The sliding (Couette) part of the dissipation, tau_c^2 / eta ~ eta (du/h)^2, falls
+    // with the viscosity as the film warms: beta = -d ln eta / dT on the fraction
+    // tau_c^2 / tau^2 of the heating (the pressure-driven part, ~ 1/eta, is left explicit).
+    // Without it, heating from a cold viscosity heats the film by thousands of kelvin and
+    // the next heating, at the overheated film, is far too small.
+    CrossFilmProfile(eta.data(), nz_, s.h_m[i], 0.0, c.u1_m_s, c.u2_m_s, u_c.data(),
+                     tau_c.data());
+    for (int j = 0; j < nz_; ++j) {
+      pz[j] = eff_.piezoviscous ? std::max(s.p_pa[i], 0.0) : 0.0;
+      tz[j] = t_.t_k(i, j);
+    }
+    lub_.viscosity().EvaluateMany(pz.data(), tz.data(), nz_, visc.data());
+    for (int j = 0; j < nz_; ++j) {
+      flow->u_m_s(i, j) = u[j];
+      flow->heating_w_m3(i, j) = tau[j] * tau[j] / eta[j];
+      const double beta = std::max(-visc[j].deta_dT / visc[j].eta_pa_s, 0.0);
+      const double couette =
+          tau[j] != 0.0 ? std::min(tau_c[j] * tau_c[j] / (tau[j] * tau[j]), 1.0) : 1.0;
+      flow->heating_decay_1_k(i, j) = std::isfinite(beta) ? beta * couette : 0.0;
+    }
+  }
+  flow->heating_reference_t_k = t_.t_k;
+}
+
+void FilmField::SetTemperature(const Eigen::MatrixXd& t_k) {
+  t_.t_k = t_k;
+  t_.t1_k = t_.t_k.col(0);
+  t_.t2_k = t_.t_k.col(nz_ - 1);
+}
+
+FilmField::EnergyUpdate FilmField::MapTemperature(const ContactConditions& c,
+                                                  const FilmState& s,
+                                                  const FilmState* previous,
+                                                  double dt_s,
+                                                  double tolerance_k,
+                                                  Eigen::MatrixXd* image) {
+  EnergyUpdate out;
+  Energy(c.temperature_k);
+  const FilmTemperature* prev_t = nullptr;
+  FilmFlowField flow = Flow(c, s, previous, dt_s, &prev_t);
+  Heating(c, s, &flow);
+  FilmTemperature next = t_;
+  out.summary = energy_->Solve(flow, prev_t, prev_t ? dt_s : 0.0, tolerance_k, &next);
+  out.ok = out.summary.usable() && next.t_k.allFinite();
+  if (!out.ok) return out;
+  out.max_change_k = (next.t_k - t_.t_k).cwiseAbs().maxCoeff();
+  t_.q1_w_m2 = next.q1_w_m2;
+  t_.q2_w_m2 = next.q2_w_m2;
+  *image = next.t_k;
+  return out;
+}
+
 FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
                                                      const FilmState& s,
                                                      const FilmState* previous,
@@ -221,23 +305,8 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
     return out;
   }
   Energy(c.temperature_k);
-  const int n = grid_.size();
-  FilmFlowField flow;
-  flow.p_pa = s.p_pa.cwiseMax(0.0);
-  flow.h_m = s.h_m;
-  flow.u1_m_s = c.u1_m_s;
-  flow.u2_m_s = c.u2_m_s;
-  flow.u_m_s.resize(n, nz_);
-  flow.heating_w_m3.resize(n, nz_);
-  const bool transient = dt_s > 0 && previous && previous->valid();
-  if (transient) {
-    flow.dpdt_pa_s = (flow.p_pa - previous->p_pa.cwiseMax(0.0)) / dt_s;
-    flow.dhdt_m_s = (s.h_m - previous->h_m) / dt_s;
-  }
-  const FilmTemperature* prev_t =
-      transient && previous->temperature.Matches(n, nz_) ? &previous->temperature : nullptr;
-  Eigen::VectorXd slope(n);
-  for (int i = 0; i < n; ++i) slope[i] = Slope(flow.p_pa, i);
+  const FilmTemperature* prev_t = nullptr;
+  FilmFlowField flow = Flow(c, s, previous, dt_s, &prev_t);
   const Eigen::MatrixXd incoming = t_.t_k;
   // At fixed pressure the temperature is a fixed point of T -> T_energy(heating(eta(p, T))):
   // the shear heating falls as the film warms. Up to inner_iterations_ energy solves,
@@ -246,40 +315,12 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
   // nodes: 1 energy solve per coupling iteration needed 270 energy solves in all, an inner
   // loop to convergence 1088 (with 210 instead of 270 pressure solves): one is the default.
   AndersonMixer mixer(5);
-  std::vector<double> eta(nz_), u(nz_), tau(nz_), u_c(nz_), tau_c(nz_), pz(nz_), tz(nz_);
-  std::vector<ViscosityValue> visc(nz_);
-  flow.heating_decay_1_k.resize(n, nz_);
   const double inner_tolerance = 0.1 * opt_.thermal_tolerance_k;
   const int inner_max = inner_iterations_;
   double change = 0, energy_time = 0;
   int inner_done = 0;
   for (int it = 0; it < inner_max; ++it) {
-    for (int i = 0; i < n; ++i) {
-      NodeViscosity(c, s, i, eta.data(), false);
-      CrossFilmProfile(eta.data(), nz_, s.h_m[i], slope[i], c.u1_m_s, c.u2_m_s, u.data(),
-                       tau.data());
-      // The sliding (Couette) part of the dissipation, tau_c^2 / eta ~ eta (du/h)^2, falls
-      // with the viscosity as the film warms: beta = -d ln eta / dT on the fraction
-      // tau_c^2 / tau^2 of the heating (the pressure-driven part, ~ 1/eta, is left explicit).
-      // Without it, heating from a cold viscosity heats the film by thousands of kelvin and
-      // the next heating, at the overheated film, is far too small.
-      CrossFilmProfile(eta.data(), nz_, s.h_m[i], 0.0, c.u1_m_s, c.u2_m_s, u_c.data(),
-                       tau_c.data());
-      for (int j = 0; j < nz_; ++j) {
-        pz[j] = eff_.piezoviscous ? std::max(s.p_pa[i], 0.0) : 0.0;
-        tz[j] = t_.t_k(i, j);
-      }
-      lub_.viscosity().EvaluateMany(pz.data(), tz.data(), nz_, visc.data());
-      for (int j = 0; j < nz_; ++j) {
-        flow.u_m_s(i, j) = u[j];
-        flow.heating_w_m3(i, j) = tau[j] * tau[j] / eta[j];
-        const double beta = std::max(-visc[j].deta_dT / visc[j].eta_pa_s, 0.0);
-        const double couette =
-            tau[j] != 0.0 ? std::min(tau_c[j] * tau_c[j] / (tau[j] * tau[j]), 1.0) : 1.0;
-        flow.heating_decay_1_k(i, j) = std::isfinite(beta) ? beta * couette : 0.0;
-      }
-    }
-    flow.heating_reference_t_k = t_.t_k;
+    Heating(c, s, &flow);
     // Heating limiter: the first energy solve of a sliding contact sees the heating of the
     // isothermal (cold) viscosity and can heat the film by thousands of kelvin, beyond the
     // range of the density law. Such a solve is repeated with the heating scaled down (by
@@ -324,10 +365,10 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
     t_.q1_w_m2 = next.q1_w_m2;
     t_.q2_w_m2 = next.q2_w_m2;
     if (change < inner_tolerance || out.limited) {
-      t_.t_k = next.t_k.cwiseMax(0.8 * c.temperature_k);
+      t_.t_k = next.t_k.cwiseMax(MinTemperature(c.temperature_k));
     } else {
       t_.t_k = mixer.Mix(t_.t_k, next.t_k, relaxation)
-                   .cwiseMax(0.8 * c.temperature_k)
+                   .cwiseMax(MinTemperature(c.temperature_k))
                    .cwiseMin(c.temperature_k + kMaxRiseK);
     }
     t_.t1_k = t_.t_k.col(0);
@@ -345,7 +386,7 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
   if (out.limited) out.max_change_k = std::max(out.max_change_k, 10 * opt_.thermal_tolerance_k);
   if (out.max_change_k >= opt_.thermal_tolerance_k && !out.limited) {
     t_.t_k = outer_.Mix(incoming, t_.t_k, 1.0)
-                 .cwiseMax(0.8 * c.temperature_k)
+                 .cwiseMax(MinTemperature(c.temperature_k))
                  .cwiseMin(c.temperature_k + kMaxRiseK);
     t_.t1_k = t_.t_k.col(0);
     t_.t2_k = t_.t_k.col(nz_ - 1);
@@ -357,35 +398,6 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
     out.summary.message = "the film temperature at fixed pressure did not settle (change " +
                           FormatReal(change) + " K)";
   return out;
-}
-
-Eigen::MatrixXd AndersonMixer::Mix(const Eigen::MatrixXd& x_in,
-                                   const Eigen::MatrixXd& g_in,
-                                   double relaxation) {
-  const Eigen::Map<const Eigen::VectorXd> x(x_in.data(), x_in.size());
-  const Eigen::Map<const Eigen::VectorXd> g(g_in.data(), g_in.size());
-  const Eigen::VectorXd f = g - x;
-  Eigen::VectorXd next = x + relaxation * f;
-  if (have_) {
-    dx_.push_back(x - x_);
-    df_.push_back(f - f_);
-    if (static_cast<int>(dx_.size()) > depth_) {
-      dx_.erase(dx_.begin());
-      df_.erase(df_.begin());
-    }
-    const int m = static_cast<int>(df_.size());
-    Eigen::MatrixXd dF(f.size(), m), dX(f.size(), m);
-    for (int k = 0; k < m; ++k) {
-      dF.col(k) = df_[k];
-      dX.col(k) = dx_[k];
-    }
-    const Eigen::VectorXd gamma = dF.colPivHouseholderQr().solve(f);
-    if (gamma.allFinite()) next -= (dX + relaxation * dF) * gamma;
-  }
-  have_ = true;
-  x_ = x;
-  f_ = f;
-  return Eigen::Map<const Eigen::MatrixXd>(next.data(), x_in.rows(), x_in.cols());
 }
 
 void FilmField::Store(FilmState* s) const {

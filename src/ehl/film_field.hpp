@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "ehl/anderson_mixer.hpp"
 #include "tehl/ehl/film_effects.hpp"
 #include "tehl/ehl/film_energy.hpp"
 #include "tehl/ehl/grid.hpp"
@@ -29,21 +30,6 @@ class Lubricant;
 }
 
 namespace tehl::internal {
-
-// Anderson acceleration of a fixed-point iteration x -> g(x), damped by `relaxation`
-// (Walker & Ni 2011, type II, depth m).
-class AndersonMixer {
- public:
-  explicit AndersonMixer(int depth) : depth_(depth) {}
-  // The next iterate from the current one and its image.
-  Eigen::MatrixXd Mix(const Eigen::MatrixXd& x, const Eigen::MatrixXd& g, double relaxation);
-
- private:
-  int depth_;
-  bool have_ = false;
-  Eigen::VectorXd x_, f_;
-  std::vector<Eigen::VectorXd> dx_, df_;
-};
 
 class FilmField {
  public:
@@ -82,6 +68,25 @@ class FilmField {
                                  double dt_s,
                                  double relaxation);
 
+  // One evaluation of the coupling map G(T) for the Newton coupling (ehl/fixed_point_newton.hpp):
+  // the film temperature the energy equation gives at the pressure of s with the shear
+  // heating of the current temperature, solved to tolerance_k [K], into *image (n x nz);
+  // neither relaxed nor mixed nor limited. The current temperature stays; the wall heat
+  // fluxes become those of the image.
+  EnergyUpdate MapTemperature(const ContactConditions& c,
+                              const FilmState& s,
+                              const FilmState* previous,
+                              double dt_s,
+                              double tolerance_k,
+                              Eigen::MatrixXd* image);
+  // Sets the current film temperature (n x nz; columns 0 and nz-1 are the surfaces) [K].
+  void SetTemperature(const Eigen::MatrixXd& t_k);
+  const Eigen::MatrixXd& film_temperature() const { return t_.t_k; }
+  // Lowest and highest film temperature the coupling accepts at inlet temperature t0_k [K].
+  static double MinTemperature(double t0_k) { return 0.8 * t0_k; }
+  static double MaxTemperature(double t0_k) { return t0_k + kMaxRiseK; }
+  static constexpr double kMaxRiseK = 400.0;  // largest film temperature rise accepted [K]
+
   // Writes the current temperature into the state (thermal runs).
   void Store(FilmState* s) const;
 
@@ -93,6 +98,15 @@ class FilmField {
   void NodeViscosity(
       const ContactConditions& c, const FilmState& s, int i, double* eta, bool newtonian) const;
   double Slope(const Eigen::VectorXd& p, int i) const;  // dp/dx at node i [Pa/m]
+  // The flow field of a pressure solution without its velocity profile and heating; the
+  // old temperature level of a transient step (or null) into *prev_t.
+  FilmFlowField Flow(const ContactConditions& c,
+                     const FilmState& s,
+                     const FilmState* previous,
+                     double dt_s,
+                     const FilmTemperature** prev_t) const;
+  // Velocity profile, shear heating and its temperature response at the current temperature.
+  void Heating(const ContactConditions& c, const FilmState& s, FilmFlowField* flow) const;
   void Energy(double t0_k);
 
   UniformGrid grid_;

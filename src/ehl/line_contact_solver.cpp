@@ -11,6 +11,7 @@
 
 #include "base/schema.hpp"
 #include "ehl/film_field.hpp"
+#include "ehl/fixed_point_newton.hpp"
 #include "ehl/newton_system.hpp"
 #include "ehl/reynolds_system.hpp"
 #include "tehl/ehl/elastic_deflection.hpp"
@@ -27,6 +28,13 @@ using internal::NewtonSystem;
 using internal::ReynoldsSystem;
 using internal::TimeDerivative;
 using Clock = std::chrono::steady_clock;
+// Newton on the thermal coupling: each map evaluation's energy solve tolerance and the
+// finite-difference step of its directional derivatives [K] (noise / step ~ 1e-4).
+constexpr double kCouplingMapToleranceK = 1e-5;
+constexpr double kCouplingFdStepK = 0.1;
+constexpr double kCouplingMapPressureTolerance = 1e-11;  // [-]
+// Coupled (thermal) grid sequencing stops at this many nodes [-].
+constexpr int kMinThermalCoarseNodes = 65;
 // Newton tolerance of the early thermal coupling iterations [-].
 constexpr double kCouplingNewtonTolerance = 1e-5;
 }  // namespace
@@ -120,6 +128,7 @@ std::vector<std::string> LineContactSolver::Options::Validate() const {
   rule(max_coupling_iterations >= 1, "max_coupling_iterations", max_coupling_iterations, ">= 1");
   rule(thermal_relaxation > 0 && thermal_relaxation <= 1, "thermal_relaxation", thermal_relaxation,
        "in (0, 1]");
+  rule(coupling_newton_after >= 0, "coupling_newton_after", coupling_newton_after, ">= 0");
   return bad;
 }
 
@@ -132,6 +141,8 @@ std::string LineContactSolver::Summary::BriefReport() const {
   if (coupling_iterations)
     o << ", " << coupling_iterations << " thermal coupling iterations (last dT "
       << temperature_change_k << " K, energy balance " << energy_balance_error << ")";
+  if (coupling_newton_iterations)
+    o << ", " << coupling_newton_iterations << " coupling Newton steps";
   o << ", residual " << residual << ", load error " << load_error << ", " << linear_solver << ", "
     << wall_time_s << " s";
   if (!usable()) o << ": " << message;
@@ -552,18 +563,7 @@ class LineContactSolver::Impl {
     cs.time_s = 0;
     const Summary sum = coarse_->Solve(c, TimeDerivative{}, &cs);
     if (!sum.usable()) return InitialGuess(c);
-    FilmState s;
-    s.p_pa.setZero(n);
-    const UniformGrid& g = coarse_->grid_;
-    for (int i = 1; i < n - 1; ++i) {
-      const double t = (grid_.x(i) - g.x_start_m()) / g.dx_m();
-      const int k = std::clamp(static_cast<int>(t), 0, g.size() - 2);
-      const double f = t - k;
-      s.p_pa[i] = (1 - f) * cs.p_pa[k] + f * cs.p_pa[k + 1];
-    }
-    s.h0_m = cs.h0_m;
-    Film(c, &s);
-    return s;
+    return Interpolated(coarse_->grid_, cs, c);
   }
 
   // --- transient ----------------------------------------------------------------------
@@ -733,14 +733,163 @@ class LineContactSolver::Impl {
     });
   }
 
+  struct CouplingNewton {
+    internal::FixedPointNewtonResult result;
+    Summary pressure;     // the last pressure solve (at the returned temperature)
+    double balance = -1;  // energy balance error of the last energy solve [-]
+  };
+  // Newton-Krylov on T = G(T), G = the energy solve at the pressure solved with the film at T
+  // (ehl/fixed_point_newton.hpp), from the field's temperature and the state *s; on return
+  // *s holds the pressure solved at the last temperature, which the field holds.
+  CouplingNewton NewtonCoupling(const ContactConditions& c,
+                                const TimeDerivative& td,
+                                const FilmState* previous,
+                                double dt_s,
+                                FilmState* s) {
+    CouplingNewton out;
+    const Eigen::MatrixXd start = field_->film_temperature();
+    const Eigen::Index rows = start.rows(), cols = start.cols();
+    FilmState work = *s;
+    Eigen::MatrixXd image;
+    const internal::FixedPointMap map = [&](const Eigen::VectorXd& x, Eigen::VectorXd* g) {
+      field_->SetTemperature(Eigen::Map<const Eigen::MatrixXd>(x.data(), rows, cols));
+      FilmState trial = work;
+      const double keep_tolerance = opt_.tolerance;
+      opt_.tolerance = std::min(opt_.tolerance, kCouplingMapPressureTolerance);
+      out.pressure = Solve(c, td, &trial);
+      opt_.tolerance = keep_tolerance;
+      if (!out.pressure.usable()) return false;
+      internal::FilmField::EnergyUpdate e;
+      try {
+        e = field_->MapTemperature(c, trial, previous, dt_s, kCouplingMapToleranceK, &image);
+      } catch (const std::exception&) {
+        return false;
+      }
+      if (!e.ok) return false;
+      out.balance = e.summary.balance.RelativeError();
+      work = trial;
+      *g = Eigen::Map<const Eigen::VectorXd>(image.data(), image.size());
+      return true;
+    };
+    internal::FixedPointNewtonOptions o;
+    o.tolerance = opt_.thermal_tolerance_k;
+    o.fd_step = kCouplingFdStepK;
+    o.lower = internal::FilmField::MinTemperature(c.temperature_k);
+    o.upper = internal::FilmField::MaxTemperature(c.temperature_k);
+    Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(start.data(), start.size());
+    out.result = internal::SolveFixedPoint(map, o, &x);
+    if (std::getenv("TEHL_DEBUG_COUPLING")) {
+      std::fprintf(stderr, "coupling Newton: %s, %d steps, %d GMRES, %d maps, residual %g K:",
+                   out.result.converged ? "converged" : "failed", out.result.newton_iterations,
+                   out.result.krylov_iterations, out.result.map_evaluations, out.result.residual);
+      for (double h : out.result.history) std::fprintf(stderr, " %g", h);
+      std::fprintf(stderr, " %s\n", out.result.message.c_str());
+    }
+    // The field holds x and `work` the pressure at x (the map was last evaluated there).
+    *s = work;
+    return out;
+  }
+
   // Thermal / non-Newtonian: pressure solves and field updates alternate until the fields
   // settle (DESIGN.md section 5); otherwise a plain pressure solve. `previous` and dt_s give
   // the energy equation its old level (dt_s <= 0: steady).
+  //
+  // A steady thermal solve whose coupling does not settle is sequenced like the pressure
+  // (docs/theory.md, "Thermal coupling"): the coupled problem is solved on the grid of half
+  // the cells (recursively, down to kMinThermalCoarseNodes), and the fine coupling starts from
+  // its pressure and temperature. A sliding Newtonian film can have a cool and a hot branch
+  // of steady solutions (the cool one ends in a fold as the slide grows); the coarse grid
+  // lands on the hot branch where the fine iteration, started cold, cannot.
   Summary SolveCoupled(const ContactConditions& c,
                        const TimeDerivative& td,
                        const FilmState* previous,
                        double dt_s,
                        FilmState* s) {
+    const bool steady = dt_s <= 0 && !td.active;
+    const int nc = (grid_.size() - 1) / 2 + 1;
+    const bool sequence = eff_.thermal && steady && nc >= kMinThermalCoarseNodes;
+    // Where a coarse grid can start it, the fine Newton waits for that start: from the
+    // stalled alternation it rarely converges (measured on the sliding discs).
+    Summary sum = CoupleOnce(c, td, previous, dt_s, !sequence, s);
+    if (sum.usable() || !sequence || sum.termination != Termination::kCouplingNotConverged)
+      return sum;
+    const auto t0 = Clock::now();
+    if (!thermal_coarse_)
+      thermal_coarse_ = std::make_unique<Impl>(UniformGrid(grid_.x_start_m(), grid_.x_end_m(), nc),
+                                               e_prime_, lub_, eff_, opt_, s1_, s2_, solids_);
+    FilmState cs;
+    const Summary coarse = thermal_coarse_->SolveCoupled(c, td, nullptr, 0.0, &cs);
+    Summary total = sum;
+    total.total_iterations += coarse.total_iterations;
+    total.krylov_iterations += coarse.krylov_iterations;
+    total.coupling_iterations += coarse.coupling_iterations;
+    total.coupling_newton_iterations += coarse.coupling_newton_iterations;
+    if (coarse.usable()) {
+      FilmState fine = Interpolated(thermal_coarse_->grid_, cs, c);
+      const Summary again = CoupleOnce(c, td, previous, dt_s, true, &fine);
+      total.total_iterations += again.total_iterations;
+      total.krylov_iterations += again.krylov_iterations;
+      total.coupling_iterations += again.coupling_iterations;
+      total.coupling_newton_iterations += again.coupling_newton_iterations;
+      if (std::getenv("TEHL_DEBUG_COUPLING"))
+        std::fprintf(stderr, "thermal sequencing %d -> %d: %s\n", nc, grid_.size(),
+                     again.usable() ? "settled" : again.message.c_str());
+      if (again.usable()) {
+        *s = fine;
+        Summary done = again;
+        done.total_iterations = total.total_iterations;
+        done.krylov_iterations = total.krylov_iterations;
+        done.coupling_iterations = total.coupling_iterations;
+        done.coupling_newton_iterations = total.coupling_newton_iterations;
+        done.wall_time_s = sum.wall_time_s + std::chrono::duration<double>(Clock::now() - t0).count();
+        return done;
+      }
+    }
+    total.message += coarse.usable()
+                         ? "; started from the coupled solution on " + std::to_string(nc) +
+                               " nodes, it did not settle either"
+                         : "; on " + std::to_string(nc) + " nodes it did not settle either";
+    total.wall_time_s += std::chrono::duration<double>(Clock::now() - t0).count();
+    return total;
+  }
+
+  // A state of grid g interpolated linearly onto this grid: pressure, rigid approach and (when
+  // present) the film temperature, node row by node row.
+  FilmState Interpolated(const UniformGrid& g, const FilmState& cs, const ContactConditions& c) {
+    const int n = grid_.size();
+    FilmState s;
+    s.p_pa.setZero(n);
+    const bool thermal = cs.temperature.t_k.rows() == g.size();
+    if (thermal) s.temperature.t_k.resize(n, cs.temperature.t_k.cols());
+    for (int i = 0; i < n; ++i) {
+      const double t = (grid_.x(i) - g.x_start_m()) / g.dx_m();
+      const int k = std::clamp(static_cast<int>(t), 0, g.size() - 2);
+      const double f = std::clamp(t - k, 0.0, 1.0);
+      if (i > 0 && i < n - 1) s.p_pa[i] = (1 - f) * cs.p_pa[k] + f * cs.p_pa[k + 1];
+      if (thermal)
+        s.temperature.t_k.row(i) =
+            (1 - f) * cs.temperature.t_k.row(k) + f * cs.temperature.t_k.row(k + 1);
+    }
+    if (thermal) {
+      const Eigen::Index nz = s.temperature.t_k.cols();
+      s.temperature.t1_k = s.temperature.t_k.col(0);
+      s.temperature.t2_k = s.temperature.t_k.col(nz - 1);
+      s.temperature.q1_w_m2.setZero(n);
+      s.temperature.q2_w_m2.setZero(n);
+    }
+    s.h0_m = cs.h0_m;
+    Film(c, &s);
+    return s;
+  }
+
+  // One coupled solve from *s: the alternation, then (newton: when it stalls) Newton on the
+  // coupling.
+  Summary CoupleOnce(const ContactConditions& c,
+                     const TimeDerivative& td,
+                     const FilmState* previous,
+                     double dt_s,
+                     bool newton,
+                     FilmState* s) {
     if (!field_) return Solve(c, td, s);
     const auto t0 = Clock::now();
     field_->Begin(c, *s);
@@ -749,8 +898,17 @@ class LineContactSolver::Impl {
     double change_t = -1, change_f = 0, change_p = 1, balance = -1;
     Eigen::VectorXd p_last;
     bool settled = false;
-    std::string energy_failure;
+    std::string energy_failure, newton_message;
     const double newton_tolerance = opt_.tolerance;
+    // Newton on the coupling (Newtonian thermal runs) takes over from the best iterate when
+    // the alternation stalls: no new smallest temperature change for coupling_newton_after
+    // iterations, or all iterations used.
+    const bool newton_possible =
+        newton && eff_.thermal && !eff_.non_newtonian && opt_.coupling_newton_after > 0;
+    double best_change = std::numeric_limits<double>::infinity();
+    int since_best = 0;
+    Eigen::MatrixXd best_t;
+    FilmState best_s;
     for (int k = 0; k < opt_.max_coupling_iterations && !settled; ++k) {
       // Inexact coupling: while the temperature still moves by more than 10x its tolerance,
       // the pressure need not be solved to the final tolerance.
@@ -775,6 +933,7 @@ class LineContactSolver::Impl {
         // coupling that can only come from a diverging iterate, which is a failed solve, not
         // bad input.
         internal::FilmField::EnergyUpdate e;
+        const Eigen::MatrixXd t_in = field_->film_temperature();
         try {
           e = field_->UpdateTemperature(c, *s, previous, dt_s, opt_.thermal_relaxation);
         } catch (const std::exception& ex) {
@@ -783,6 +942,16 @@ class LineContactSolver::Impl {
         }
         balance = e.summary.balance.RelativeError();
         change_t = e.max_change_k;
+        if (newton_possible && e.ok && !e.limited) {
+          if (change_t < best_change) {
+            best_change = change_t;
+            best_t = t_in;
+            best_s = *s;
+            since_best = 0;
+          } else if (++since_best >= opt_.coupling_newton_after) {
+            break;
+          }
+        }
         if (!e.ok) {
           energy_failure = e.summary.message;
           break;
@@ -801,6 +970,21 @@ class LineContactSolver::Impl {
         krylov += sum.krylov_iterations;
       }
     }
+    if (!settled && newton_possible && best_t.size() > 0) {
+      *s = best_s;
+      field_->SetTemperature(best_t);
+      const CouplingNewton nt = NewtonCoupling(c, td, previous, dt_s, s);
+      total += nt.pressure.total_iterations;
+      krylov += nt.pressure.krylov_iterations;
+      coupling += nt.result.map_evaluations;
+      change_t = nt.result.residual;
+      balance = nt.balance;
+      settled = nt.result.converged && nt.pressure.usable();
+      sum = nt.pressure;  // the pressure solve at the returned temperature
+      sum.coupling_newton_iterations = nt.result.newton_iterations;
+      energy_failure.clear();
+      newton_message = nt.result.message;
+    }
     field_->Store(s);
     if (sum.usable() && !settled) {
       sum.termination = Termination::kCouplingNotConverged;
@@ -813,7 +997,10 @@ class LineContactSolver::Impl {
                               internal::FormatReal(change_p) +
                               " p_max, largest log change "
                               "of the Eyring factor " +
-                              internal::FormatReal(change_f) + ")";
+                              internal::FormatReal(change_f) + ")" +
+                              (newton_message.empty() ? ""
+                                                      : "; Newton on the coupling: " +
+                                                            newton_message);
     }
     sum.total_iterations = total;
     sum.krylov_iterations = krylov;
@@ -841,6 +1028,7 @@ class LineContactSolver::Impl {
   std::vector<char> cavitated_;
   History hist_;
   std::unique_ptr<Impl> coarse_;                // grid sequencing, built on first use
+  std::unique_ptr<Impl> thermal_coarse_;        // coupled grid sequencing, built on first use
   std::unique_ptr<internal::FilmField> field_;  // thermal / non-Newtonian runs only
 };
 

@@ -5,8 +5,10 @@ list(APPEND TEHL_SOURCES
   src/ehl/reynolds_system.cpp
   src/ehl/cross_film.cpp
   src/ehl/film_field.cpp
+  src/ehl/anderson_mixer.cpp
   src/ehl/newton_system.cpp
   src/ehl/gmres.cpp
+  src/ehl/fixed_point_newton.cpp
   src/ehl/newton_krylov_solver.cpp
   src/ehl/reused_lu_solver.cpp
   src/ehl/line_contact_solver.cpp

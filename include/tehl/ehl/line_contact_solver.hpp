@@ -109,6 +109,10 @@ class LineContactSolver {
     double coupling_pressure_tolerance = 1e-4;  // non-Newtonian: max |p change| / p_max [-]
     int max_coupling_iterations = 40;      // [-]
     double thermal_relaxation = 0.8;       // T <- T + relaxation (T_energy - T) [-]
+    // Newtonian thermal runs: when the alternation has not reduced its temperature change
+    // for this many iterations (or has used them all), Newton-Krylov on the coupling takes
+    // over from the best iterate (docs/theory.md, "Thermal coupling"); 0 = never [-].
+    int coupling_newton_after = 6;
     std::vector<std::string> Validate() const;  // every violated rule; empty = valid
   };
 
@@ -138,6 +142,7 @@ class LineContactSolver {
     int coupling_iterations = 0;    // [-]
     double temperature_change_k = -1;  // [K]
     double energy_balance_error = -1;  // [-]
+    int coupling_newton_iterations = 0;  // Newton steps on the coupling (0 = not needed) [-]
     bool usable() const { return termination == Termination::kConverged; }
     std::string BriefReport() const;
   };
