@@ -8,6 +8,7 @@
 
 #include "base/schema.hpp"
 #include "ehl/cross_film.hpp"
+#include "ehl/eyring_wall_stress.hpp"
 #include "tehl/error.hpp"
 #include "tehl/lubricant/lubricant.hpp"
 
@@ -16,97 +17,6 @@ namespace {
 
 constexpr double kEyringRelaxation = 0.5;
 constexpr int kHeatingCuts = 8;      // heating scalings tried per energy solve [-]
-
-// Ree-Eyring shear rate with an optional limiting shear stress [1/s].
-struct EyringLaw {
-  double tau0 = 0;   // Eyring stress [Pa]
-  double tau_l = 0;  // limiting shear stress at this pressure [Pa]; 0 = none
-  double Rate(double tau, double eta) const {
-    const double s = std::clamp(tau / tau0, -600.0, 600.0);
-    double g = tau0 / eta * std::sinh(s);
-    if (tau_l > 0) g /= std::max(1.0 - (tau / tau_l) * (tau / tau_l), 1e-12);
-    return g;
-  }
-  // d Rate / d tau.
-  double Slope(double tau, double eta) const {
-    const double s = std::clamp(tau / tau0, -600.0, 600.0);
-    double g = std::cosh(s) / eta;
-    if (tau_l > 0) {
-      const double r = tau / tau_l, d = std::max(1.0 - r * r, 1e-12);
-      g = g / d + tau0 / eta * std::sinh(s) * 2.0 * r / (tau_l * d * d);
-    }
-    return g;
-  }
-};
-
-// Wall stress tau_1 with h int gdot(tau_1 + h p' xi) dxi = du (trapezoidal in xi). The
-// integral increases with tau_1: a bracket is grown from the Couette estimate
-// tau0 asinh(eta_h du / (h tau0)) (exact for a uniform film without pressure gradient, eta_h
-// the harmonic mean), then Newton's method safeguarded by bisection.
-double EyringWallStress(const EyringLaw& law,
-                        const double* eta,
-                        int nz,
-                        double h,
-                        double dpdx,
-                        double du,
-                        double /*newtonian_guess*/) {
-  const double g = h * dpdx;  // tau(xi) = tau_1 + g xi
-  double lo_limit = -1e300, hi_limit = 1e300;
-  if (law.tau_l > 0) {
-    // Keep |tau| < tau_l across the film.
-    lo_limit = -law.tau_l * (1 - 1e-9) - std::min(0.0, g);
-    hi_limit = law.tau_l * (1 - 1e-9) - std::max(0.0, g);
-    if (lo_limit >= hi_limit) return 0.5 * (lo_limit + hi_limit);
-  }
-  auto residual = [&](double t1, double* slope) {
-    double f = 0, d = 0;
-    for (int j = 0; j < nz; ++j) {
-      const double w = (j == 0 || j == nz - 1) ? 0.5 : 1.0;
-      const double tau = t1 + g * j / (nz - 1.0);
-      f += w * law.Rate(tau, eta[j]);
-      d += w * law.Slope(tau, eta[j]);
-    }
-    const double scale = h / (nz - 1.0);
-    *slope = d * scale;
-    return f * scale - du;
-  };
-  double inv_mean = 0;
-  for (int j = 0; j < nz; ++j) inv_mean += ((j == 0 || j == nz - 1) ? 0.5 : 1.0) / eta[j];
-  const double eta_h = (nz - 1.0) / inv_mean;
-  double t = law.tau0 * std::asinh(eta_h * du / (h * law.tau0)) - 0.5 * g;
-  t = std::clamp(t, lo_limit, hi_limit);
-  // Grow a bracket [lo, hi] around the root.
-  double slope;
-  double lo = t, hi = t;
-  double r_lo = residual(lo, &slope), r_hi = r_lo;
-  for (double step = law.tau0; r_lo > 0 && lo > lo_limit; step *= 2) {
-    hi = lo;
-    r_hi = r_lo;
-    lo = std::max(lo - step, lo_limit);
-    r_lo = residual(lo, &slope);
-  }
-  for (double step = law.tau0; r_hi < 0 && hi < hi_limit; step *= 2) {
-    lo = hi;
-    r_lo = r_hi;
-    hi = std::min(hi + step, hi_limit);
-    r_hi = residual(hi, &slope);
-  }
-  if (r_lo > 0) return lo;
-  if (r_hi < 0) return hi;
-  t = 0.5 * (lo + hi);
-  for (int it = 0; it < 100; ++it) {
-    const double r = residual(t, &slope);
-    if (r > 0)
-      hi = t;
-    else
-      lo = t;
-    if (std::abs(r) <= 1e-12 * std::abs(du) || hi - lo <= 1e-13 * (std::abs(t) + law.tau0)) break;
-    double next = t - r / slope;
-    if (!(next > lo && next < hi) || !std::isfinite(next)) next = 0.5 * (lo + hi);
-    t = next;
-  }
-  return t;
-}
 
 }  // namespace
 

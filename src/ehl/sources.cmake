@@ -6,6 +6,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/cross_film.cpp
   src/ehl/film_field.cpp
   src/ehl/anderson_mixer.cpp
+  src/ehl/eyring_wall_stress.cpp
   src/ehl/newton_system.cpp
   src/ehl/gmres.cpp
   src/ehl/fixed_point_newton.cpp
