@@ -13,6 +13,9 @@ list(APPEND TEHL_SOURCES
   src/ehl/newton_krylov_solver.cpp
   src/ehl/reused_lu_solver.cpp
   src/ehl/line_contact_solver.cpp
+  src/ehl/line_contact_pressure.cpp
+  src/ehl/line_contact_transient.cpp
+  src/ehl/line_contact_coupling.cpp
   src/ehl/elastic_deflection.cpp
   src/ehl/surface_roughness.cpp
   src/ehl/dry_contact.cpp

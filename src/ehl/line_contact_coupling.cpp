@@ -1,0 +1,277 @@
+// LineContactSolver::Impl: the thermal / non-Newtonian coupling (the pressure/energy alternation,
+// Newton-Krylov on the coupling map, coupled grid sequencing) and the friction of the film.
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include "base/schema.hpp"
+#include "ehl/film_field.hpp"
+#include "ehl/fixed_point_newton.hpp"
+#include "ehl/line_contact_impl.hpp"
+#include "tehl/lubricant/lubricant.hpp"
+
+namespace tehl {
+namespace {
+using internal::TimeDerivative;
+using Clock = std::chrono::steady_clock;
+// Newton on the thermal coupling: each map evaluation's energy solve tolerance and the
+// finite-difference step of its directional derivatives [K] (noise / step ~ 1e-4).
+constexpr double kCouplingMapToleranceK = 1e-5;
+constexpr double kCouplingFdStepK = 0.1;
+constexpr double kCouplingMapPressureTolerance = 1e-11;  // [-]
+// Coupled (thermal) grid sequencing stops at this many nodes [-].
+constexpr int kMinThermalCoarseNodes = 65;
+// Newton tolerance of the early thermal coupling iterations [-].
+constexpr double kCouplingNewtonTolerance = 1e-5;
+}  // namespace
+
+FilmFriction LineContactSolver::Impl::Friction(const ContactConditions& c, const FilmState& st) {
+  FilmState s = st;
+  Film(c, &s);
+  if (field_) {
+    field_->Begin(c, st);
+    return field_->Friction(c, s);
+  }
+  // Newtonian, isothermal: eta(p, T0) uniform across the film (two cross-film nodes).
+  return internal::IntegrateFriction(grid_, s, c, 2, [&](int i, double* eta) {
+    const double p = eff_.piezoviscous ? std::max(s.p_pa[i], 0.0) : 0.0;
+    eta[0] = eta[1] = lub_.viscosity().Evaluate(p, c.temperature_k).eta_pa_s;
+  });
+}
+
+LineContactSolver::Impl::CouplingNewton LineContactSolver::Impl::NewtonCoupling(
+    const ContactConditions& c,
+    const TimeDerivative& td,
+    const FilmState* previous,
+    double dt_s,
+    FilmState* s) {
+  CouplingNewton out;
+  const Eigen::MatrixXd start = field_->film_temperature();
+  const Eigen::Index rows = start.rows(), cols = start.cols();
+  FilmState work = *s;
+  Eigen::MatrixXd image;
+  const internal::FixedPointMap map = [&](const Eigen::VectorXd& x, Eigen::VectorXd* g) {
+    field_->SetTemperature(Eigen::Map<const Eigen::MatrixXd>(x.data(), rows, cols));
+    FilmState trial = work;
+    const double keep_tolerance = opt_.tolerance;
+    opt_.tolerance = std::min(opt_.tolerance, kCouplingMapPressureTolerance);
+    out.pressure = Solve(c, td, &trial);
+    opt_.tolerance = keep_tolerance;
+    if (!out.pressure.usable()) return false;
+    internal::FilmField::EnergyUpdate e;
+    try {
+      e = field_->MapTemperature(c, trial, previous, dt_s, kCouplingMapToleranceK, &image);
+    } catch (const std::exception&) {
+      return false;
+    }
+    if (!e.ok) return false;
+    out.balance = e.summary.balance.RelativeError();
+    work = trial;
+    *g = Eigen::Map<const Eigen::VectorXd>(image.data(), image.size());
+    return true;
+  };
+  internal::FixedPointNewtonOptions o;
+  o.tolerance = opt_.thermal_tolerance_k;
+  o.fd_step = kCouplingFdStepK;
+  o.lower = internal::FilmField::MinTemperature(c.temperature_k);
+  o.upper = internal::FilmField::MaxTemperature(c.temperature_k);
+  Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(start.data(), start.size());
+  out.result = internal::SolveFixedPoint(map, o, &x);
+  if (std::getenv("TEHL_DEBUG_COUPLING")) {
+    std::fprintf(stderr, "coupling Newton: %s, %d steps, %d GMRES, %d maps, residual %g K:",
+                 out.result.converged ? "converged" : "failed", out.result.newton_iterations,
+                 out.result.krylov_iterations, out.result.map_evaluations, out.result.residual);
+    for (double h : out.result.history) std::fprintf(stderr, " %g", h);
+    std::fprintf(stderr, " %s\n", out.result.message.c_str());
+  }
+  // The field holds x and `work` the pressure at x (the map was last evaluated there).
+  *s = work;
+  return out;
+}
+
+LineContactSolver::Summary LineContactSolver::Impl::SolveCoupled(const ContactConditions& c,
+                                                                 const TimeDerivative& td,
+                                                                 const FilmState* previous,
+                                                                 double dt_s,
+                                                                 FilmState* s) {
+  const bool steady = dt_s <= 0 && !td.active;
+  const int nc = (grid_.size() - 1) / 2 + 1;
+  const bool sequence = eff_.thermal && steady && nc >= kMinThermalCoarseNodes;
+  // Where a coarse grid can start it, the fine Newton waits for that start: from the
+  // stalled alternation it rarely converges (measured on the sliding discs).
+  Summary sum = CoupleOnce(c, td, previous, dt_s, !sequence, s);
+  if (sum.usable() || !sequence || sum.termination != Termination::kCouplingNotConverged)
+    return sum;
+  const auto t0 = Clock::now();
+  if (!thermal_coarse_)
+    thermal_coarse_ = std::make_unique<Impl>(UniformGrid(grid_.x_start_m(), grid_.x_end_m(), nc),
+                                             e_prime_, lub_, eff_, opt_, s1_, s2_, solids_);
+  FilmState cs;
+  const Summary coarse = thermal_coarse_->SolveCoupled(c, td, nullptr, 0.0, &cs);
+  Summary total = sum;
+  total.total_iterations += coarse.total_iterations;
+  total.krylov_iterations += coarse.krylov_iterations;
+  total.coupling_iterations += coarse.coupling_iterations;
+  total.coupling_newton_iterations += coarse.coupling_newton_iterations;
+  if (coarse.usable()) {
+    FilmState fine = Interpolated(thermal_coarse_->grid_, cs, c);
+    const Summary again = CoupleOnce(c, td, previous, dt_s, true, &fine);
+    total.total_iterations += again.total_iterations;
+    total.krylov_iterations += again.krylov_iterations;
+    total.coupling_iterations += again.coupling_iterations;
+    total.coupling_newton_iterations += again.coupling_newton_iterations;
+    if (std::getenv("TEHL_DEBUG_COUPLING"))
+      std::fprintf(stderr, "thermal sequencing %d -> %d: %s\n", nc, grid_.size(),
+                   again.usable() ? "settled" : again.message.c_str());
+    if (again.usable()) {
+      *s = fine;
+      Summary done = again;
+      done.total_iterations = total.total_iterations;
+      done.krylov_iterations = total.krylov_iterations;
+      done.coupling_iterations = total.coupling_iterations;
+      done.coupling_newton_iterations = total.coupling_newton_iterations;
+      done.wall_time_s = sum.wall_time_s + std::chrono::duration<double>(Clock::now() - t0).count();
+      return done;
+    }
+  }
+  total.message += coarse.usable()
+                       ? "; started from the coupled solution on " + std::to_string(nc) +
+                             " nodes, it did not settle either"
+                       : "; on " + std::to_string(nc) + " nodes it did not settle either";
+  total.wall_time_s += std::chrono::duration<double>(Clock::now() - t0).count();
+  return total;
+}
+
+LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactConditions& c,
+                                                               const TimeDerivative& td,
+                                                               const FilmState* previous,
+                                                               double dt_s,
+                                                               bool newton,
+                                                               FilmState* s) {
+  if (!field_) return Solve(c, td, s);
+  const auto t0 = Clock::now();
+  field_->Begin(c, *s);
+  Summary sum;
+  int total = 0, krylov = 0, stages = 0, coupling = 0;
+  double change_t = -1, change_f = 0, change_p = 1, balance = -1;
+  Eigen::VectorXd p_last;
+  bool settled = false;
+  std::string energy_failure, newton_message;
+  const double newton_tolerance = opt_.tolerance;
+  // Newton on the coupling (Newtonian thermal runs) takes over from the best iterate when
+  // the alternation stalls: no new smallest temperature change for coupling_newton_after
+  // iterations, or all iterations used.
+  const bool newton_possible =
+      newton && eff_.thermal && !eff_.non_newtonian && opt_.coupling_newton_after > 0;
+  double best_change = std::numeric_limits<double>::infinity();
+  int since_best = 0;
+  Eigen::MatrixXd best_t;
+  FilmState best_s;
+  for (int k = 0; k < opt_.max_coupling_iterations && !settled; ++k) {
+    // Inexact coupling: while the temperature still moves by more than 10x its tolerance,
+    // the pressure need not be solved to the final tolerance.
+    opt_.tolerance = change_t > 10 * opt_.thermal_tolerance_k
+                         ? std::max(newton_tolerance, kCouplingNewtonTolerance)
+                         : newton_tolerance;
+    sum = Solve(c, td, s);
+    opt_.tolerance = newton_tolerance;
+    total += sum.total_iterations;
+    krylov += sum.krylov_iterations;
+    stages += sum.continuation_stages;
+    if (!sum.usable()) break;
+    ++coupling;
+    // Pressure change between coupling iterations, relative to p_max.
+    if (p_last.size() == s->p_pa.size())
+      change_p = (s->p_pa - p_last).cwiseAbs().maxCoeff() / std::max(s->MaxPressure(), 1.0);
+    p_last = s->p_pa;
+    change_f = field_->UpdateRheology(c, *s);
+    change_t = 0.0;
+    if (eff_.thermal) {
+      // The energy solver checks its inputs and throws on a malformed flow field; inside a
+      // coupling that can only come from a diverging iterate, which is a failed solve, not
+      // bad input.
+      internal::FilmField::EnergyUpdate e;
+      const Eigen::MatrixXd t_in = field_->film_temperature();
+      try {
+        e = field_->UpdateTemperature(c, *s, previous, dt_s, opt_.thermal_relaxation);
+      } catch (const std::exception& ex) {
+        e.ok = false;
+        e.summary.message = ex.what();
+      }
+      balance = e.summary.balance.RelativeError();
+      change_t = e.max_change_k;
+      if (newton_possible && e.ok && !e.limited) {
+        if (change_t < best_change) {
+          best_change = change_t;
+          best_t = t_in;
+          best_s = *s;
+          since_best = 0;
+        } else if (++since_best >= opt_.coupling_newton_after) {
+          break;
+        }
+      }
+      if (!e.ok) {
+        energy_failure = e.summary.message;
+        break;
+      }
+    }
+    if (std::getenv("TEHL_DEBUG_COUPLING"))
+      std::fprintf(stderr, "coupling %d: newton %d dT %g df %g dp %g balance %g\n", k,
+                   sum.total_iterations, change_t, change_f, change_p, balance);
+    // Thermal: the temperature settles. Non-Newtonian: the pressure settles (the Eyring factor
+    // itself is spiky where dp/dx is large, so its own change is not the measure).
+    settled = change_t < opt_.thermal_tolerance_k &&
+              (!eff_.non_newtonian || change_p < opt_.coupling_pressure_tolerance);
+    if (settled) {  // the pressure of the settled fields
+      sum = Solve(c, td, s);
+      total += sum.total_iterations;
+      krylov += sum.krylov_iterations;
+    }
+  }
+  if (!settled && newton_possible && best_t.size() > 0) {
+    *s = best_s;
+    field_->SetTemperature(best_t);
+    const CouplingNewton nt = NewtonCoupling(c, td, previous, dt_s, s);
+    total += nt.pressure.total_iterations;
+    krylov += nt.pressure.krylov_iterations;
+    coupling += nt.result.map_evaluations;
+    change_t = nt.result.residual;
+    balance = nt.balance;
+    settled = nt.result.converged && nt.pressure.usable();
+    sum = nt.pressure;  // the pressure solve at the returned temperature
+    sum.coupling_newton_iterations = nt.result.newton_iterations;
+    energy_failure.clear();
+    newton_message = nt.result.message;
+  }
+  field_->Store(s);
+  if (sum.usable() && !settled) {
+    sum.termination = Termination::kCouplingNotConverged;
+    sum.message =
+        !energy_failure.empty()
+            ? "energy equation: " + energy_failure
+            : "the pressure/temperature coupling did not settle in " +
+                  std::to_string(opt_.max_coupling_iterations) +
+                  " iterations (last temperature change " + internal::FormatReal(change_t) +
+                  " K, pressure change " + internal::FormatReal(change_p) +
+                  " p_max, largest log change "
+                  "of the Eyring factor " +
+                  internal::FormatReal(change_f) + ")" +
+                  (newton_message.empty() ? "" : "; Newton on the coupling: " + newton_message);
+  }
+  sum.total_iterations = total;
+  sum.krylov_iterations = krylov;
+  sum.continuation_stages = stages;
+  sum.coupling_iterations = coupling;
+  sum.temperature_change_k = change_t;
+  sum.energy_balance_error = balance;
+  sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  return sum;
+}
+
+}  // namespace tehl

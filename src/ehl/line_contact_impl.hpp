@@ -1,0 +1,160 @@
+// The private implementation of LineContactSolver (include/tehl/ehl/line_contact_solver.hpp):
+// the member functions are defined by concept in line_contact_solver.cpp (construction, film),
+// line_contact_pressure.cpp (pressure Newton, continuation, grid sequencing),
+// line_contact_transient.cpp (time stepping) and line_contact_coupling.cpp (thermal coupling,
+// friction). Private to src/ehl.
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ehl/film_field.hpp"
+#include "ehl/fixed_point_newton.hpp"
+#include "ehl/newton_system.hpp"
+#include "ehl/reynolds_system.hpp"
+#include "tehl/ehl/elastic_deflection.hpp"
+#include "tehl/ehl/line_contact_solver.hpp"
+
+namespace tehl {
+
+class LineContactSolver::Impl {
+ public:
+  Impl(const UniformGrid& grid,
+       double e_prime,
+       const Lubricant& lub,
+       const FilmEffects& eff,
+       const Options& opt,
+       std::shared_ptr<const SurfaceShape> s1,
+       std::shared_ptr<const SurfaceShape> s2,
+       const ContactSolids& solids);
+
+  const UniformGrid& grid() const { return grid_; }
+  const Options& options() const { return opt_; }
+
+  internal::FluidLaws Fluid(const ContactConditions& c, double pressure_scale = 1.0) const;
+  // Film h = h0 + x^2/(2R) + v(p) - heights at the state's travel.
+  void Film(const ContactConditions& c, FilmState* s) const;
+
+  struct Scales {
+    double p_ref, h_ref;
+  };
+
+  Scales ScalesFor(const ContactConditions& c) const;
+  double EstimateCentralFilm(const ContactConditions& c) const;
+  FilmState InitialGuess(const ContactConditions& c) const;
+  // Row weights c_i = -1/|dr_i/dP_i| at the current linearization: the complementarity
+  // min(P_i, c_i r_i) then compares two quantities of the same size (a pressure change),
+  // however much rho h^3/(12 eta) varies along the film. Negative because the cavitated
+  // branch has -r >= 0: a divergent gap could carry more flow than arrives.
+  void UpdateRowWeights(const Scales& sc);
+  internal::NewtonSystem SystemFor(const Scales& sc, double load) const;
+  // Scaled residual F(z) of a state; false if the film is not positive or not finite.
+  // `linearize` also refreshes the derivatives and the row weights.
+  bool Residual(const ContactConditions& c,
+                const internal::FluidLaws& fluid,
+                const Scales& sc,
+                const internal::TimeDerivative& td,
+                FilmState* s,
+                Eigen::VectorXd* f,
+                bool linearize);
+  Summary Newton(const ContactConditions& c,
+                 double pressure_scale,
+                 const internal::TimeDerivative& td,
+                 FilmState* s);
+  Summary Finish(const ContactConditions& c, FilmState* s, Summary sum);
+  bool ValidConditions(const ContactConditions& c, Summary* sum) const;
+  // Newton, then continuation in load and pressure-viscosity coefficient if it fails.
+  Summary Solve(const ContactConditions& c, const internal::TimeDerivative& td, FilmState* s);
+  // Grid sequencing: without a usable guess, solve on a grid with half the cells (down to
+  // opt_.coarse_grid_nodes) and interpolate. A damped Newton method moves the cavitation
+  // boundary about one node per iteration, so the fine grid should start next to it.
+  FilmState SequencedGuess(const ContactConditions& c, const internal::TimeDerivative& td);
+
+  // --- transient ----------------------------------------------------------------------
+  struct History {
+    int levels = 0;            // stored levels (1 or 2)
+    Eigen::VectorXd q1, q2;    // rho h at t_{n-1}, t_{n-2}
+    double dt_prev = 0;        // t_{n-1} - t_{n-2}
+    ContactConditions c_prev;  // conditions at t_{n-1}
+    Eigen::MatrixXd t_prev;    // film temperature at t_{n-2} (thermal; empty before) [K]
+  };
+
+  Eigen::VectorXd RhoH(const ContactConditions& c, FilmState s);
+  void BeginTransient(const ContactConditions& c, const FilmState& s);
+  internal::TimeDerivative Derivative(double dt) const;
+  Summary OneStep(const ContactConditions& c, double dt, FilmState* s);
+  // The coupling's starting temperature for a step: linear in time through the last two
+  // levels (the energy equation's old level stays the state's). Measured on the thermal
+  // seed 004 cycle: fewer coupling iterations per step than starting from the last level.
+  void ExtrapolateTemperature(double dt, const FilmState& s, FilmState* next) const;
+  Summary Step(const ContactConditions& c_new, double dt, FilmState* s);
+  double ResidualNorm(const ContactConditions& c, const FilmState& st);
+  Eigen::VectorXd MassFlow(const ContactConditions& c, const FilmState& st);
+  TransientHistory SaveTransient() const;
+  void RestoreTransient(const TransientHistory& h);
+  FilmFriction Friction(const ContactConditions& c, const FilmState& st);
+
+  struct CouplingNewton {
+    internal::FixedPointNewtonResult result;
+    Summary pressure;     // the last pressure solve (at the returned temperature)
+    double balance = -1;  // energy balance error of the last energy solve [-]
+  };
+  // Newton-Krylov on T = G(T), G = the energy solve at the pressure solved with the film at T
+  // (ehl/fixed_point_newton.hpp), from the field's temperature and the state *s; on return
+  // *s holds the pressure solved at the last temperature, which the field holds.
+  CouplingNewton NewtonCoupling(const ContactConditions& c,
+                                const internal::TimeDerivative& td,
+                                const FilmState* previous,
+                                double dt_s,
+                                FilmState* s);
+  // Thermal / non-Newtonian: pressure solves and field updates alternate until the fields
+  // settle (DESIGN.md section 5); otherwise a plain pressure solve. `previous` and dt_s give
+  // the energy equation its old level (dt_s <= 0: steady).
+  //
+  // A steady thermal solve whose coupling does not settle is sequenced like the pressure
+  // (docs/theory.md, "Thermal coupling"): the coupled problem is solved on the grid of half
+  // the cells (recursively, down to kMinThermalCoarseNodes), and the fine coupling starts from
+  // its pressure and temperature. A sliding Newtonian film can have a cool and a hot branch
+  // of steady solutions (the cool one ends in a fold as the slide grows); the coarse grid
+  // lands on the hot branch where the fine iteration, started cold, cannot.
+  Summary SolveCoupled(const ContactConditions& c,
+                       const internal::TimeDerivative& td,
+                       const FilmState* previous,
+                       double dt_s,
+                       FilmState* s);
+  // A state of grid g interpolated linearly onto this grid: pressure, rigid approach and (when
+  // present) the film temperature, node row by node row.
+  FilmState Interpolated(const UniformGrid& g, const FilmState& cs, const ContactConditions& c);
+  // One coupled solve from *s: the alternation, then (newton: when it stalls) Newton on the
+  // coupling.
+  Summary CoupleOnce(const ContactConditions& c,
+                     const internal::TimeDerivative& td,
+                     const FilmState* previous,
+                     double dt_s,
+                     bool newton,
+                     FilmState* s);
+
+ private:
+  UniformGrid grid_;
+  double e_prime_;
+  const Lubricant& lub_;
+  FilmEffects eff_;
+  Options opt_;
+  std::shared_ptr<const SurfaceShape> s1_, s2_;
+  ContactSolids solids_;
+  internal::ReynoldsSystem sys_;
+  std::optional<ElasticDeflection> elastic_;
+  std::unique_ptr<internal::NewtonLinearSolver> linear_;
+  Eigen::VectorXd x2_, row_weight_;
+  mutable Eigen::VectorXd heights_;
+  std::vector<char> cavitated_;
+  History hist_;
+  std::unique_ptr<Impl> coarse_;                // grid sequencing, built on first use
+  std::unique_ptr<Impl> thermal_coarse_;        // coupled grid sequencing, built on first use
+  std::unique_ptr<internal::FilmField> field_;  // thermal / non-Newtonian runs only
+};
+
+}  // namespace tehl

@@ -1,0 +1,335 @@
+// LineContactSolver::Impl: the scaled complementarity residual, the pressure Newton (watchdog
+// line search), continuation in load and grid sequencing.
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "base/schema.hpp"
+#include "ehl/line_contact_impl.hpp"
+
+namespace tehl {
+namespace {
+using internal::FluidLaws;
+using internal::NewtonSystem;
+using internal::TimeDerivative;
+using Clock = std::chrono::steady_clock;
+}  // namespace
+
+void LineContactSolver::Impl::UpdateRowWeights(const Scales& sc) {
+  const int n = grid_.size();
+  row_weight_.setZero(n);
+  NewtonSystem ns = SystemFor(sc, 1.0);
+  double largest = 0.0;
+  for (int i = 1; i < n - 1; ++i) {
+    row_weight_[i] = std::abs(ns.Diagonal(i)) * sc.p_ref;
+    largest = std::max(largest, row_weight_[i]);
+  }
+  for (int i = 1; i < n - 1; ++i)
+    row_weight_[i] = -1.0 / std::max(row_weight_[i], 1e-300 + 1e-14 * largest);
+}
+
+NewtonSystem LineContactSolver::Impl::SystemFor(const Scales& sc, double load) const {
+  NewtonSystem ns;
+  ns.n = grid_.size();
+  ns.dx = grid_.dx_m();
+  ns.p_ref = sc.p_ref;
+  ns.h_ref = sc.h_ref;
+  ns.row_scale = &row_weight_;
+  ns.load = load;
+  ns.a = &sys_.dr_dp();
+  ns.b = &sys_.dr_dh();
+  ns.elastic = elastic_ ? &*elastic_ : nullptr;
+  return ns;
+}
+
+bool LineContactSolver::Impl::Residual(const ContactConditions& c,
+                                       const FluidLaws& fluid,
+                                       const Scales& sc,
+                                       const TimeDerivative& td,
+                                       FilmState* s,
+                                       Eigen::VectorXd* f,
+                                       bool linearize) {
+  Film(c, s);
+  if (!s->h_m.allFinite() || s->h_m.minCoeff() <= 0.0) return false;
+  sys_.Evaluate(fluid, c.um(), s->p_pa, s->h_m, td, linearize);
+  if (linearize) UpdateRowWeights(sc);
+  const int n = grid_.size(), m = n - 2;
+  f->resize(m + 1);
+  cavitated_.assign(n, 0);
+  for (int i = 1; i <= m; ++i) {
+    const double pi = s->p_pa[i] / sc.p_ref;
+    const double ri = row_weight_[i] * sys_.residual()[i];
+    cavitated_[i] = pi <= ri;
+    (*f)[i - 1] = std::min(pi, ri);
+  }
+  (*f)[m] = (grid_.dx_m() * s->p_pa.sum() - c.load_n_per_m) / c.load_n_per_m;
+  return f->allFinite();
+}
+
+LineContactSolver::Summary LineContactSolver::Impl::Newton(const ContactConditions& c,
+                                                           double pressure_scale,
+                                                           const TimeDerivative& td,
+                                                           FilmState* s) {
+  Summary sum;
+  sum.linear_solver = linear_->Name();
+  const FluidLaws fluid = Fluid(c, pressure_scale);
+  const Scales sc = ScalesFor(c);
+  const int n = grid_.size(), m = n - 2;
+  Eigen::VectorXd f, f_trial, dz;
+  if (!Residual(c, fluid, sc, td, s, &f, true)) {
+    // A non-positive film from the guess: lift h0 until the film is positive.
+    const double lift = std::max(0.0, -s->h_m.minCoeff()) + sc.h_ref;
+    s->h0_m += lift;
+    if (!Residual(c, fluid, sc, td, s, &f, true)) {
+      sum.termination = Termination::kInvalidInput;
+      sum.message = "the initial guess gives a non-positive or non-finite film";
+      return sum;
+    }
+  }
+  NewtonSystem ns = SystemFor(sc, c.load_n_per_m);
+  FilmState trial = *s;
+  double norm = f.lpNorm<Eigen::Infinity>();
+  sum.residual = norm;
+  // Watchdog globalization (Chamberlain, Powell, Lemarechal & Pedersen 1982): a full Newton
+  // step may raise ||F|| for a few iterations while the pressure spike and the cavitation
+  // boundary move. Up to kWatchdog full steps are taken from a checkpoint; if ||F|| has not
+  // fallen below the checkpoint's by then, the iteration returns there and backtracks.
+  constexpr int kWatchdog = 3;
+  int watchdog = 0;
+  bool watchdog_allowed = true;
+  FilmState checkpoint;
+  Eigen::VectorXd f_check, dz_check;
+  double phi_check = 0.0;
+  auto try_step = [&](double lambda, const Eigen::VectorXd& dir, const FilmState& from) {
+    // Projected step: p >= 0 holds at the solution, so negative pressures from a step
+    // that moves the cavitation boundary are set to zero at once (without this the
+    // boundary creeps one node per damped iteration on fine grids).
+    trial.p_pa = from.p_pa;
+    trial.p_pa.segment(1, m) += lambda * sc.p_ref * dir.head(m);
+    trial.p_pa = trial.p_pa.cwiseMax(0.0);
+    trial.h0_m = from.h0_m + lambda * sc.h_ref * dir[m];
+    trial.travel1_m = from.travel1_m;
+    trial.travel2_m = from.travel2_m;
+    return Residual(c, fluid, sc, td, &trial, &f_trial, false);
+  };
+  for (int it = 0; it < opt_.max_iterations; ++it) {
+    if (norm < opt_.tolerance) break;
+    ns.cavitated = cavitated_;
+    std::string why;
+    if (!linear_->Solve(ns, -f, &dz, &why)) {
+      sum.termination = Termination::kLinearSolverFailed;
+      sum.message = why;
+      return Finish(c, s, sum);
+    }
+    sum.krylov_iterations += linear_->last_krylov_iterations();
+    double phi0 = f.norm();
+    double lambda = 1.0;
+    bool accepted = false;
+    const bool full_ok = try_step(1.0, dz, *s);
+    const double phi_full = full_ok ? f_trial.norm() : 0.0;
+    if (full_ok && phi_full <= (1.0 - 1e-4) * phi0) {
+      accepted = true;
+    } else if (full_ok && watchdog_allowed && watchdog < kWatchdog) {
+      if (watchdog == 0) {
+        checkpoint = *s;
+        f_check = f;
+        dz_check = dz;
+        phi_check = phi0;
+      }
+      ++watchdog;
+      accepted = true;
+    } else {
+      if (watchdog > 0) {  // back to the checkpoint, then backtrack along its direction
+        *s = checkpoint;
+        Residual(c, fluid, sc, td, s, &f, true);
+        dz = dz_check;
+        phi0 = phi_check;
+        watchdog = 0;
+        watchdog_allowed = false;
+      }
+      for (lambda = 0.5; lambda >= opt_.min_step_fraction; lambda *= 0.5) {
+        if (try_step(lambda, dz, *s) && f_trial.norm() <= (1.0 - 1e-4 * lambda) * phi0) {
+          accepted = true;
+          break;
+        }
+      }
+    }
+    if (!accepted) {
+      sum.iterations = it;
+      sum.termination = Termination::kLineSearchFailed;
+      sum.message = "line search found no decrease of the residual (step " +
+                    internal::FormatReal(lambda) + ") at residual " + internal::FormatReal(norm);
+      Residual(c, fluid, sc, td, s, &f, false);
+      return Finish(c, s, sum);
+    }
+    std::swap(s->p_pa, trial.p_pa);
+    s->h0_m = trial.h0_m;
+    Residual(c, fluid, sc, td, s, &f, true);
+    norm = f.lpNorm<Eigen::Infinity>();
+    if (watchdog > 0 && f.norm() <= (1.0 - 1e-4) * phi_check) {
+      watchdog = 0;  // the full steps paid off
+      watchdog_allowed = true;
+    } else if (watchdog == 0 && lambda < 1.0) {
+      watchdog_allowed = true;  // a damped step was taken: full steps may be tried again
+    }
+    IterationRecord rec;
+    rec.residual = norm;
+    rec.step = lambda;
+    rec.krylov_iterations = linear_->last_krylov_iterations();
+    rec.cavitated_nodes = static_cast<int>(std::count(cavitated_.begin(), cavitated_.end(), 1));
+    sum.history.push_back(rec);
+    sum.iterations = it + 1;
+  }
+  sum.residual = norm;
+  if (norm < opt_.tolerance) {
+    sum.termination = Termination::kConverged;
+    sum.message = "converged";
+  } else {
+    sum.termination = Termination::kMaxIterations;
+    sum.message = "no convergence in " + std::to_string(opt_.max_iterations) +
+                  " Newton iterations (residual " + internal::FormatReal(norm) + ")";
+  }
+  return Finish(c, s, sum);
+}
+
+LineContactSolver::Summary LineContactSolver::Impl::Finish(const ContactConditions& c,
+                                                           FilmState* s,
+                                                           Summary sum) {
+  // The reported pressure is the complementarity solution: p >= 0 exactly.
+  s->p_pa = s->p_pa.cwiseMax(0.0);
+  Film(c, s);
+  sum.total_iterations = sum.iterations;
+  sum.load_error = std::abs(grid_.dx_m() * s->p_pa.sum() - c.load_n_per_m) / c.load_n_per_m;
+  return sum;
+}
+
+bool LineContactSolver::Impl::ValidConditions(const ContactConditions& c, Summary* sum) const {
+  std::string bad;
+  if (!(c.reduced_radius_m > 0) || !std::isfinite(c.reduced_radius_m)) bad += " R <= 0;";
+  if (!(c.load_n_per_m > 0) || !std::isfinite(c.load_n_per_m)) bad += " w <= 0;";
+  if (!(c.um() > 0) || !std::isfinite(c.um()))
+    bad += " entrainment speed um <= 0 (the inlet is at x_start);";
+  if (!(c.temperature_k > 0)) bad += " T <= 0 K;";
+  if (bad.empty()) return true;
+  sum->termination = Termination::kInvalidInput;
+  sum->message = "invalid contact conditions:" + bad;
+  return false;
+}
+
+LineContactSolver::Summary LineContactSolver::Impl::Solve(const ContactConditions& c,
+                                                          const TimeDerivative& td,
+                                                          FilmState* s) {
+  const auto t0 = Clock::now();
+  Summary sum;
+  if (!ValidConditions(c, &sum)) return sum;
+  if (!s->valid() || s->p_pa.size() != grid_.size()) *s = SequencedGuess(c, td);
+  const FilmState start = *s;
+  sum = Newton(c, 1.0, td, s);
+  int total = sum.total_iterations, krylov = sum.krylov_iterations, stages = 0;
+  if (!sum.usable() && opt_.max_continuation_stages > 0 && !td.active) {
+    // Continuation: theta scales the load and the pressure-viscosity coefficient.
+    const std::string first_failure = sum.message;
+    *s = InitialGuess(ContactConditions{c.reduced_radius_m, c.u1_m_s, c.u2_m_s,
+                                        0.05 * c.load_n_per_m, c.temperature_k});
+    double theta = 0.05, growth = 2.0;
+    Summary stage;
+    while (stages < opt_.max_continuation_stages) {
+      ContactConditions ci = c;
+      ci.load_n_per_m = theta * c.load_n_per_m;
+      FilmState trial = *s;
+      stage = Newton(ci, theta, td, &trial);
+      ++stages;
+      total += stage.total_iterations;
+      krylov += stage.krylov_iterations;
+      if (stage.usable()) {
+        *s = trial;
+        if (theta >= 1.0) break;
+        theta = std::min(1.0, theta * growth);
+      } else {
+        growth = std::sqrt(growth);
+        theta = theta / std::sqrt(growth);
+        if (growth < 1.01) break;
+      }
+    }
+    sum = stage;
+    if (!sum.usable()) {
+      sum.message = "no convergence directly (" + first_failure +
+                    ") nor by continuation in "
+                    "load and pressure-viscosity coefficient (" +
+                    stage.message + ")";
+      if (!s->valid()) *s = start;
+    }
+  }
+  sum.total_iterations = total;
+  sum.krylov_iterations = krylov;
+  sum.continuation_stages = stages;
+  sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  return sum;
+}
+
+FilmState LineContactSolver::Impl::SequencedGuess(const ContactConditions& c,
+                                                  const TimeDerivative& td) {
+  const int n = grid_.size();
+  const int nc = (n - 1) / 2 + 1;
+  if (td.active || nc < opt_.coarse_grid_nodes) return InitialGuess(c);
+  if (!coarse_) {
+    Options o = opt_;
+    o.linear_solver = LinearSolverKind::kAuto;
+    // The coarse guess is isothermal and Newtonian: the fine grid couples the fields.
+    FilmEffects coarse_effects = eff_;
+    coarse_effects.thermal = false;
+    coarse_effects.non_newtonian = false;
+    coarse_ = std::make_unique<Impl>(UniformGrid(grid_.x_start_m(), grid_.x_end_m(), nc), e_prime_,
+                                     lub_, coarse_effects, o, s1_, s2_, solids_);
+  }
+  FilmState cs;
+  cs.time_s = 0;
+  const Summary sum = coarse_->Solve(c, TimeDerivative{}, &cs);
+  if (!sum.usable()) return InitialGuess(c);
+  return Interpolated(coarse_->grid_, cs, c);
+}
+
+FilmState LineContactSolver::Impl::Interpolated(const UniformGrid& g,
+                                                const FilmState& cs,
+                                                const ContactConditions& c) {
+  const int n = grid_.size();
+  FilmState s;
+  s.p_pa.setZero(n);
+  const bool thermal = cs.temperature.t_k.rows() == g.size();
+  if (thermal) s.temperature.t_k.resize(n, cs.temperature.t_k.cols());
+  for (int i = 0; i < n; ++i) {
+    const double t = (grid_.x(i) - g.x_start_m()) / g.dx_m();
+    const int k = std::clamp(static_cast<int>(t), 0, g.size() - 2);
+    const double f = std::clamp(t - k, 0.0, 1.0);
+    if (i > 0 && i < n - 1) s.p_pa[i] = (1 - f) * cs.p_pa[k] + f * cs.p_pa[k + 1];
+    if (thermal)
+      s.temperature.t_k.row(i) =
+          (1 - f) * cs.temperature.t_k.row(k) + f * cs.temperature.t_k.row(k + 1);
+  }
+  if (thermal) {
+    const Eigen::Index nz = s.temperature.t_k.cols();
+    s.temperature.t1_k = s.temperature.t_k.col(0);
+    s.temperature.t2_k = s.temperature.t_k.col(nz - 1);
+    s.temperature.q1_w_m2.setZero(n);
+    s.temperature.q2_w_m2.setZero(n);
+  }
+  s.h0_m = cs.h0_m;
+  Film(c, &s);
+  return s;
+}
+
+double LineContactSolver::Impl::ResidualNorm(const ContactConditions& c, const FilmState& st) {
+  if (field_) field_->Begin(c, st);
+  FilmState s = st;
+  Eigen::VectorXd f;
+  if (!Residual(c, Fluid(c), ScalesFor(c), TimeDerivative{}, &s, &f, true))
+    return std::numeric_limits<double>::infinity();
+  return f.lpNorm<Eigen::Infinity>();
+}
+
+}  // namespace tehl

@@ -1,0 +1,147 @@
+// LineContactSolver::Impl: time stepping (BDF1/BDF2 history, substeps, the extrapolated start
+// temperature, saved and restored history).
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "ehl/line_contact_impl.hpp"
+
+namespace tehl {
+namespace {
+using internal::TimeDerivative;
+using Clock = std::chrono::steady_clock;
+}  // namespace
+
+Eigen::VectorXd LineContactSolver::Impl::RhoH(const ContactConditions& c, FilmState s) {
+  Film(c, &s);
+  TimeDerivative none;
+  sys_.Evaluate(Fluid(c), c.um(), s.p_pa, s.h_m, none, false);
+  return sys_.rho_h();
+}
+
+void LineContactSolver::Impl::BeginTransient(const ContactConditions& c, const FilmState& s) {
+  if (field_) field_->Begin(c, s);
+  hist_ = History{};
+  hist_.levels = 1;
+  hist_.q1 = RhoH(c, s);
+  hist_.c_prev = c;
+}
+
+TimeDerivative LineContactSolver::Impl::Derivative(double dt) const {
+  TimeDerivative td;
+  if (!eff_.transient || hist_.levels == 0) return td;
+  td.active = true;
+  td.q1 = hist_.q1;
+  if (hist_.levels >= 2 && opt_.time_scheme == TimeScheme::kBdf2) {
+    // Variable-step BDF2 (omega = dt_n / dt_{n-1}).
+    const double w = dt / hist_.dt_prev;
+    td.a0 = (1 + 2 * w) / ((1 + w) * dt);
+    td.a1 = -(1 + w) / dt;
+    td.a2 = w * w / ((1 + w) * dt);
+    td.q2 = hist_.q2;
+  } else {
+    td.a0 = 1.0 / dt;
+    td.a1 = -1.0 / dt;
+    td.a2 = 0.0;
+    td.q2 = hist_.q1;
+  }
+  return td;
+}
+
+LineContactSolver::Summary LineContactSolver::Impl::OneStep(const ContactConditions& c,
+                                                            double dt,
+                                                            FilmState* s) {
+  FilmState next = *s;
+  next.time_s = s->time_s + dt;
+  next.travel1_m = s->travel1_m + 0.5 * dt * (hist_.c_prev.u1_m_s + c.u1_m_s);
+  next.travel2_m = s->travel2_m + 0.5 * dt * (hist_.c_prev.u2_m_s + c.u2_m_s);
+  const TimeDerivative td = Derivative(dt);
+  ExtrapolateTemperature(dt, *s, &next);
+  Summary sum = SolveCoupled(c, td, s, eff_.transient ? dt : 0.0, &next);
+  if (sum.usable()) {
+    if (eff_.thermal) hist_.t_prev = s->temperature.t_k;
+    *s = next;
+    hist_.q2 = hist_.q1;
+    hist_.q1 = RhoH(c, next);
+    hist_.levels = std::min(hist_.levels + 1, 2);
+    hist_.dt_prev = dt;
+    hist_.c_prev = c;
+  }
+  return sum;
+}
+
+void LineContactSolver::Impl::ExtrapolateTemperature(double dt,
+                                                     const FilmState& s,
+                                                     FilmState* next) const {
+  const Eigen::MatrixXd& t_n = s.temperature.t_k;
+  if (!eff_.thermal || hist_.dt_prev <= 0 || hist_.t_prev.size() == 0 ||
+      hist_.t_prev.rows() != t_n.rows() || hist_.t_prev.cols() != t_n.cols())
+    return;
+  const double t0 = hist_.c_prev.temperature_k;
+  FilmTemperature& t = next->temperature;
+  t.t_k = (t_n + (dt / hist_.dt_prev) * (t_n - hist_.t_prev)).cwiseMax(0.8 * t0);
+  t.t1_k = t.t_k.col(0);
+  t.t2_k = t.t_k.col(t.t_k.cols() - 1);
+}
+
+LineContactSolver::Summary LineContactSolver::Impl::Step(const ContactConditions& c_new,
+                                                         double dt,
+                                                         FilmState* s) {
+  const auto t0 = Clock::now();
+  Summary sum;
+  if (!(dt > 0) || !std::isfinite(dt)) {
+    sum.message = "time step must be > 0";
+    return sum;
+  }
+  if (hist_.levels == 0) BeginTransient(c_new, *s);
+  const History saved_hist = hist_;
+  const FilmState saved_state = *s;
+  int total = 0, krylov = 0;
+  for (int parts : {1, 2, 4}) {
+    hist_ = saved_hist;
+    *s = saved_state;
+    const ContactConditions c_old = hist_.c_prev;
+    bool ok = true;
+    for (int k = 1; k <= parts && ok; ++k) {
+      const double f = static_cast<double>(k) / parts;
+      ContactConditions ck = c_new;
+      ck.reduced_radius_m =
+          c_old.reduced_radius_m + f * (c_new.reduced_radius_m - c_old.reduced_radius_m);
+      ck.u1_m_s = c_old.u1_m_s + f * (c_new.u1_m_s - c_old.u1_m_s);
+      ck.u2_m_s = c_old.u2_m_s + f * (c_new.u2_m_s - c_old.u2_m_s);
+      ck.load_n_per_m = c_old.load_n_per_m + f * (c_new.load_n_per_m - c_old.load_n_per_m);
+      ck.temperature_k = c_old.temperature_k + f * (c_new.temperature_k - c_old.temperature_k);
+      sum = OneStep(ck, dt / parts, s);
+      total += sum.total_iterations;
+      krylov += sum.krylov_iterations;
+      ok = sum.usable();
+    }
+    sum.substeps = parts;
+    if (ok) break;
+  }
+  if (!sum.usable()) {
+    hist_ = saved_hist;
+    // Keep the best iterate of the last attempt (finite by construction).
+  }
+  sum.total_iterations = total;
+  sum.krylov_iterations = krylov;
+  sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  return sum;
+}
+
+LineContactSolver::TransientHistory LineContactSolver::Impl::SaveTransient() const {
+  return TransientHistory{hist_.levels,  hist_.q1,     hist_.q2,
+                          hist_.dt_prev, hist_.c_prev, hist_.t_prev};
+}
+
+void LineContactSolver::Impl::RestoreTransient(const TransientHistory& h) {
+  hist_.levels = h.levels;
+  hist_.q1 = h.q1;
+  hist_.q2 = h.q2;
+  hist_.dt_prev = h.dt_prev_s;
+  hist_.c_prev = h.c_prev;
+  hist_.t_prev = h.t_prev_k;
+}
+
+}  // namespace tehl
