@@ -35,9 +35,13 @@ RoelandsGammaViscosity::RoelandsGammaViscosity(const Parameters& parameters)
 }
 
 inline ViscosityValue RoelandsGammaViscosity::Eval(double p_pa, double T_k) const {
-  const Parameters& q = parameters_;
   const double base = 1.0 + kRoelandsPressureScale * p_pa;
-  const double pz = std::pow(base, q.pressure_index);
+  return Finish(base, std::pow(base, parameters_.pressure_index), T_k);
+}
+
+// The law from base = 1 + p/p0 and pz = base^Z.
+inline ViscosityValue RoelandsGammaViscosity::Finish(double base, double pz, double T_k) const {
+  const Parameters& q = parameters_;
   const double gamma = q.temperature_coefficient_per_k;
   const double eta =
       q.viscosity_pa_s * std::exp(a_ * (pz - 1.0) - gamma * (T_k - q.reference_temperature_k));
@@ -54,7 +58,19 @@ void RoelandsGammaViscosity::EvaluateMany(const double* p_pa,
                                           const double* T_k,
                                           int n,
                                           ViscosityValue* out) const {
-  for (int i = 0; i < n; ++i) out[i] = Eval(p_pa[i], T_k[i]);
+  // Across a film column the pressure repeats: (1 + p/p0)^Z is computed once per distinct p
+  // (the same operations as Eval, so the values are identical).
+  double last_p = 0, base = 1, pz = 1;
+  bool have = false;
+  for (int i = 0; i < n; ++i) {
+    if (!have || p_pa[i] != last_p) {
+      last_p = p_pa[i];
+      base = 1.0 + kRoelandsPressureScale * last_p;
+      pz = std::pow(base, parameters_.pressure_index);
+      have = true;
+    }
+    out[i] = Finish(base, pz, T_k[i]);
+  }
 }
 
 double RoelandsGammaViscosity::PressureViscosityCoefficient() const {

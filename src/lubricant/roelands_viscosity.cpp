@@ -34,9 +34,13 @@ RoelandsViscosity::RoelandsViscosity(const Parameters& parameters) : parameters_
 }
 
 inline ViscosityValue RoelandsViscosity::Eval(double p_pa, double T_k) const {
-  const Parameters& q = parameters_;
   const double base = 1.0 + kRoelandsPressureScale * p_pa;
-  const double pz = std::pow(base, q.pressure_index);  // (1 + p/p0)^Z
+  return Finish(base, std::pow(base, parameters_.pressure_index), T_k);  // (1 + p/p0)^Z
+}
+
+// The law from base = 1 + p/p0 and pz = base^Z.
+inline ViscosityValue RoelandsViscosity::Finish(double base, double pz, double T_k) const {
+  const Parameters& q = parameters_;
   const double t_rel =
       (T_k - kRoelandsTemperatureOffset) / (q.reference_temperature_k - kRoelandsTemperatureOffset);
   const double ts = std::pow(t_rel, -q.temperature_index);  // ((T-138)/(T0-138))^-S0
@@ -55,7 +59,19 @@ void RoelandsViscosity::EvaluateMany(const double* p_pa,
                                      const double* T_k,
                                      int n,
                                      ViscosityValue* out) const {
-  for (int i = 0; i < n; ++i) out[i] = Eval(p_pa[i], T_k[i]);
+  // Across a film column the pressure repeats: (1 + p/p0)^Z is computed once per distinct p
+  // (the same operations as Eval, so the values are identical).
+  double last_p = 0, base = 1, pz = 1;
+  bool have = false;
+  for (int i = 0; i < n; ++i) {
+    if (!have || p_pa[i] != last_p) {
+      last_p = p_pa[i];
+      base = 1.0 + kRoelandsPressureScale * last_p;
+      pz = std::pow(base, parameters_.pressure_index);
+      have = true;
+    }
+    out[i] = Finish(base, pz, T_k[i]);
+  }
 }
 
 double RoelandsViscosity::PressureViscosityCoefficient() const {

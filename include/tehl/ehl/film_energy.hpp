@@ -111,15 +111,17 @@ class FilmEnergySolver {
     // older than A(x) (a chord step) or, first, A without its reverse-flow couplings (block
     // triangular: cheap; Gauss-Seidel on the recirculation). A step whose observed
     // contraction would need more than max_chord_steps further steps to reach tolerance_k is
-    // redone with a fresh factorization of the full A (which costs about 25 steps at n = 513
-    // with reverse flow). reuse_factorization: start each Solve from the previous Solve's
+    // redone with a fresh factorization of the full A. With the far surface history out of
+    // the matrix a factorization is cheap: 3 instead of 20 cut the Picard steps of the thermal
+    // seed 004 cycle (513 nodes) from 3686 to 2403 and its CPU time by about 6 %, with the
+    // same results (docs/performance.md). reuse_factorization: start each Solve from the previous Solve's
     // factorization, as the coupling loop of a pressure solver re-solves a slowly changing
     // flow; false = a fresh factorization (without reverse flow) in every Solve.
     bool reuse_factorization = true;
     // Lags i - k <= this of the surface-temperature history kept in the factorized matrix, the
     // rest applied by FFT and lagged (all of it in the matrix if that converges slowly) [cells].
     int history_near_cells = 4;                 // >= 0 [-]
-    int max_chord_steps = 20;                   // >= 1 [-]
+    int max_chord_steps = 3;                    // >= 1 [-]
     std::vector<std::string> Validate() const;  // every violated rule; empty = valid
   };
   enum class Termination { kConverged, kMaxIterations, kLinearSolverFailed };

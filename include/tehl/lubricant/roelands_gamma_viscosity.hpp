@@ -42,6 +42,7 @@ class RoelandsGammaViscosity final : public ViscosityModel {
 
  private:
   ViscosityValue Eval(double p_pa, double T_k) const;
+  ViscosityValue Finish(double base, double pz, double T_k) const;
   Parameters parameters_;
   double a_;  // ln eta0 + 9.67 [-]
 };
