@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "lubricant/law_check.hpp"
+#include "lubricant/roelands_column.hpp"
 
 namespace tehl {
 using internal::kHoupertPressure;
@@ -58,19 +59,9 @@ void RoelandsGammaViscosity::EvaluateMany(const double* p_pa,
                                           const double* T_k,
                                           int n,
                                           ViscosityValue* out) const {
-  // Across a film column the pressure repeats: (1 + p/p0)^Z is computed once per distinct p
-  // (the same operations as Eval, so the values are identical).
-  double last_p = 0, base = 1, pz = 1;
-  bool have = false;
-  for (int i = 0; i < n; ++i) {
-    if (!have || p_pa[i] != last_p) {
-      last_p = p_pa[i];
-      base = 1.0 + kRoelandsPressureScale * last_p;
-      pz = std::pow(base, parameters_.pressure_index);
-      have = true;
-    }
-    out[i] = Finish(base, pz, T_k[i]);
-  }
+  internal::EvaluateColumn(
+      p_pa, T_k, n, kRoelandsPressureScale, parameters_.pressure_index,
+      [this](double base, double pz, double t) { return Finish(base, pz, t); }, out);
 }
 
 double RoelandsGammaViscosity::PressureViscosityCoefficient() const {

@@ -23,12 +23,8 @@ namespace tehl {
 namespace {
 
 using testing::DiscSolver;
+using testing::Sae40;
 using testing::ThermalDisc;
-
-const Lubricant& Sae40() {
-  static const Lubricant oil = Lubricant::FromFile(testing::Sae40Path());
-  return oil;
-}
 
 // cases/disc_steady.toml: R = 10 mm and p_H = sqrt(w E' / (2 pi R)) with w = 100 kN/m.
 ThermalDisc DiscSteady(double srr) {

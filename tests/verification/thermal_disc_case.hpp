@@ -33,6 +33,11 @@ struct ThermalDisc {
 };
 
 inline std::string Sae40Path() { return std::string(TEHL_SOURCE_DIR) + "/lubricants/sae40.toml"; }
+// SAE 40 of seed 004 Table 2, read once.
+inline const Lubricant& Sae40() {
+  static const Lubricant oil = Lubricant::FromFile(Sae40Path());
+  return oil;
+}
 
 // beta = -d ln eta / dT at (p = 0, T0): for the roelands_gamma law of SAE 40, gamma [1/K].
 inline double ViscosityTemperatureCoefficient(const Lubricant& oil) {

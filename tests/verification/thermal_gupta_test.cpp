@@ -18,13 +18,9 @@ namespace tehl {
 namespace {
 
 using testing::DiscSolver;
+using testing::Sae40;
 using testing::GuptaFactor;
 using testing::ThermalDisc;
-
-const Lubricant& Sae40() {
-  static const Lubricant oil = Lubricant::FromFile(testing::Sae40Path());
-  return oil;
-}
 
 TEST(ThermalGupta, ThermalLoadingOfSae40) {
   // L_T per (m/s)^2 from the Table 2 data of lubricants/sae40.toml, by hand:

@@ -17,12 +17,8 @@ namespace tehl {
 namespace {
 
 using testing::DiscSolver;
+using testing::Sae40;
 using testing::ThermalDisc;
-
-const Lubricant& Sae40() {
-  static const Lubricant oil = Lubricant::FromFile(testing::Sae40Path());
-  return oil;
-}
 
 struct Solved {
   LineContactSolver::Summary summary;
