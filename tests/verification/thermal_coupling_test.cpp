@@ -36,12 +36,6 @@ ThermalDisc DiscSteady(double srr) {
   return d;
 }
 
-// Heat into both solids, trapezoidal in x [W/m].
-double HeatIntoSolids(const FilmState& s, double dx) {
-  const Eigen::VectorXd q = s.temperature.q1_w_m2 + s.temperature.q2_w_m2;
-  return dx * (q.sum() - 0.5 * (q[0] + q[q.size() - 1]));
-}
-
 TEST(ThermalCoupling, SlidingNewtonianDiscSettles) {
   const ThermalDisc rolling = DiscSteady(0.0);
   EXPECT_NEAR(rolling.load_n_per_m(), 1.0e5, 1e-6);
@@ -54,9 +48,8 @@ TEST(ThermalCoupling, SlidingNewtonianDiscSettles) {
     ASSERT_TRUE(sum.usable()) << "SRR " << srr << ": " << sum.BriefReport();
     const double rise = s.temperature.MaxTemperature() - c.temperature_k;
     const FilmFriction f = solver.Friction(c, s);
-    const double friction_power =
-        -(f.traction1_n_per_m * c.u1_m_s + f.traction2_n_per_m * c.u2_m_s);
-    const double solids = HeatIntoSolids(s, solver.grid().dx_m());
+    const double friction_power = testing::FrictionPower(f, c);
+    const double solids = testing::HeatIntoSolids(s, solver.grid().dx_m());
     std::printf(
         "SRR %.1f: dT_max %.1f K, p_max %.3f GPa, h_c %.4f um, mu %.4f, balance %.2e, %d "
         "coupling iterations, %d coupling Newton steps; solids %.4g of %.4g W/m\n",

@@ -33,6 +33,18 @@ struct ThermalDisc {
 };
 
 inline std::string Sae40Path() { return std::string(TEHL_SOURCE_DIR) + "/lubricants/sae40.toml"; }
+// The wall heat fluxes integrated over x (trapezoidal) [W/m].
+inline double HeatIntoSolids(const FilmState& s, double dx) {
+  const Eigen::VectorXd q = s.temperature.q1_w_m2 + s.temperature.q2_w_m2;
+  return dx * (q.sum() - 0.5 * (q[0] + q[q.size() - 1]));
+}
+
+// The surfaces' friction power -(F1 u1 + F2 u2): the dissipation of a film with p = 0 at both
+// ends [W/m].
+inline double FrictionPower(const FilmFriction& f, const ContactConditions& c) {
+  return -(f.traction1_n_per_m * c.u1_m_s + f.traction2_n_per_m * c.u2_m_s);
+}
+
 // SAE 40 of seed 004 Table 2, read once.
 inline const Lubricant& Sae40() {
   static const Lubricant oil = Lubricant::FromFile(Sae40Path());

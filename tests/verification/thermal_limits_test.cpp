@@ -97,13 +97,6 @@ TEST(ThermalLimits, IsothermalPathIgnoresThermalSettings) {
   EXPECT_EQ(a.mu, b.mu);
 }
 
-// The wall heat fluxes integrated over x (trapezoidal) [W/m].
-double HeatIntoSolids(const FilmState& s, double dx) {
-  const auto& t = s.temperature;
-  const Eigen::VectorXd q = t.q1_w_m2 + t.q2_w_m2;
-  return dx * (q.sum() - 0.5 * (q[0] + q[q.size() - 1]));
-}
-
 // Disabled: sliding thermal contacts do not converge yet (docs/thermal.md, "Open points").
 TEST(ThermalLimits, DISABLED_SteadyEnergyBalanceClosesToOnePercent) {
   // VALIDATION.md section 4: generated (shear + compression) = convected + conducted into both
@@ -122,9 +115,8 @@ TEST(ThermalLimits, DISABLED_SteadyEnergyBalanceClosesToOnePercent) {
     EXPECT_GE(sum.energy_balance_error, 0.0);
     EXPECT_LT(sum.energy_balance_error, 0.01) << "SRR " << srr;
     const FilmFriction f = solver.Friction(c, s);
-    const double friction_power =
-        -(f.traction1_n_per_m * c.u1_m_s + f.traction2_n_per_m * c.u2_m_s);
-    const double solids = HeatIntoSolids(s, solver.grid().dx_m());
+    const double friction_power = testing::FrictionPower(f, c);
+    const double solids = testing::HeatIntoSolids(s, solver.grid().dx_m());
     std::printf(
         "SRR %.2f: balance error %.2e, %d coupling iterations, dT_max %.2f K, heat into "
         "solids %.4g W/m of friction power %.4g W/m\n",
