@@ -86,6 +86,11 @@ class LineContactSolver::Impl {
   void BeginTransient(const ContactConditions& c, const FilmState& s);
   internal::TimeDerivative Derivative(double dt) const;
   Summary OneStep(const ContactConditions& c, double dt, FilmState* s);
+  // Newton's start after the conditions changed from c_old to c: the pressure scaled by Hertz
+  // similarity (half-width and peak), the central film by the film fit's ratio. Only when the
+  // outlet would otherwise be more than a cell away; false (s untouched) otherwise.
+  bool PredictHertzSimilar(const ContactConditions& c_old, const ContactConditions& c,
+                           FilmState* s) const;
   // The coupling's starting temperature for a step: linear in time through the last two
   // levels (the energy equation's old level stays the state's). Measured on the thermal
   // seed 004 cycle: fewer coupling iterations per step than starting from the last level.

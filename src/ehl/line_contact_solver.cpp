@@ -296,7 +296,10 @@ FilmState LineContactSolver::InitialGuess(const ContactConditions& c) const {
 }
 LineContactSolver::Summary LineContactSolver::SolveSteady(const ContactConditions& c,
                                                           FilmState* state) {
-  return impl_->SolveCoupled(c, internal::TimeDerivative{}, nullptr, 0.0, state);
+  if (state->solved_for) impl_->PredictHertzSimilar(*state->solved_for, c, state);
+  Summary sum = impl_->SolveCoupled(c, internal::TimeDerivative{}, nullptr, 0.0, state);
+  if (sum.usable()) state->solved_for = c;
+  return sum;
 }
 void LineContactSolver::BeginTransient(const ContactConditions& c, const FilmState& initial) {
   impl_->BeginTransient(c, initial);
@@ -304,7 +307,9 @@ void LineContactSolver::BeginTransient(const ContactConditions& c, const FilmSta
 LineContactSolver::Summary LineContactSolver::Step(const ContactConditions& c,
                                                    double dt,
                                                    FilmState* state) {
-  return impl_->Step(c, dt, state);
+  Summary sum = impl_->Step(c, dt, state);
+  if (sum.usable()) state->solved_for = c;
+  return sum;
 }
 double LineContactSolver::ResidualNorm(const ContactConditions& c, const FilmState& s) const {
   return impl_->ResidualNorm(c, s);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "ehl/line_contact_impl.hpp"
+#include "tehl/units.hpp"
 
 namespace tehl {
 namespace {
@@ -57,6 +58,7 @@ LineContactSolver::Summary LineContactSolver::Impl::OneStep(const ContactConditi
   next.travel1_m = s->travel1_m + 0.5 * dt * (hist_.c_prev.u1_m_s + c.u1_m_s);
   next.travel2_m = s->travel2_m + 0.5 * dt * (hist_.c_prev.u2_m_s + c.u2_m_s);
   const TimeDerivative td = Derivative(dt);
+  PredictHertzSimilar(hist_.c_prev, c, &next);
   ExtrapolateTemperature(dt, *s, &next);
   Summary sum = SolveCoupled(c, td, s, eff_.transient ? dt : 0.0, &next);
   if (sum.usable()) {
@@ -69,6 +71,39 @@ LineContactSolver::Summary LineContactSolver::Impl::OneStep(const ContactConditi
     hist_.c_prev = c;
   }
   return sum;
+}
+
+bool LineContactSolver::Impl::PredictHertzSimilar(const ContactConditions& c_old,
+                                                   const ContactConditions& c,
+                                                   FilmState* s) const {
+  if (!opt_.predict_hertz_similar || !eff_.elastic || !s->valid() ||
+      s->p_pa.size() != grid_.size())
+    return false;
+  if (!(c_old.load_n_per_m > 0) || !(c_old.reduced_radius_m > 0)) return false;
+  const HertzScales h_old =
+      LineContactHertz(c_old.load_n_per_m, c_old.reduced_radius_m, e_prime_);
+  const HertzScales h_new = LineContactHertz(c.load_n_per_m, c.reduced_radius_m, e_prime_);
+  const double sx = h_new.half_width_m / h_old.half_width_m;
+  // The outlet sits near x = b: Newton moves a cavitation boundary by about one cell per
+  // iteration, so a shift of more than a cell is worth predicting.
+  if (std::abs(sx - 1.0) * h_old.half_width_m < grid_.dx_m()) return false;
+  const double sp = (c.load_n_per_m / c_old.load_n_per_m) / sx;
+  const int n = grid_.size();
+  const double hc = s->CentralFilm(grid_) * EstimateCentralFilm(c) / EstimateCentralFilm(c_old);
+  Eigen::VectorXd p = Eigen::VectorXd::Zero(n);
+  for (int i = 1; i < n - 1; ++i) {
+    const double t = (grid_.x(i) / sx - grid_.x_start_m()) / grid_.dx_m();
+    if (t < 0 || t > n - 1) continue;
+    const int k = std::min(static_cast<int>(t), n - 2);
+    const double f = t - k;
+    p[i] = sp * ((1 - f) * s->p_pa[k] + f * s->p_pa[k + 1]);
+  }
+  s->p_pa = p;
+  s->h0_m = 0.0;
+  Film(c, s);
+  s->h0_m = hc - s->CentralFilm(grid_);
+  Film(c, s);
+  return true;
 }
 
 void LineContactSolver::Impl::ExtrapolateTemperature(double dt,

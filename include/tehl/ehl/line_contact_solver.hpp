@@ -13,6 +13,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,10 @@ struct FilmState {
   // Thermal runs only (empty, nothing allocated, when effects.thermal is off): the film
   // temperature T(x_i, xi_j), the surface temperatures and the heat fluxes into the solids.
   FilmTemperature temperature;
+  // The conditions of the solve that produced this state (set by SolveSteady and Step when they
+  // converge). A later SolveSteady under other conditions starts from this state scaled by
+  // Hertz similarity when the contact's outlet moves by more than a grid cell.
+  std::optional<ContactConditions> solved_for;
   bool valid() const { return p_pa.size() > 0 && p_pa.size() == h_m.size(); }
   double MinFilm() const;      // h_min, parabola through the smallest node [m]
   double CentralFilm(const UniformGrid& g) const;  // h at x = 0 (interpolated) [m]
@@ -102,6 +107,10 @@ class LineContactSolver {
     int max_continuation_stages = 12; // load / pressure-viscosity continuation stages [-]
     int coarse_grid_nodes = 129;      // grid sequencing halves the grid down to this [-]
     double min_step_fraction = 1.0 / 1024;  // smallest line-search step [-]
+    // When the conditions change so much that the outlet moves by more than a grid cell, start
+    // Newton from the last solution scaled by Hertz similarity (docs/theory.md, "Warm starts"):
+    // a cavitation boundary otherwise advances by about one cell per Newton iteration.
+    bool predict_hertz_similar = true;
     // Thermal runs: the pressure solve and the energy solve alternate (the temperature
     // under-relaxed) until the temperature changes by less than thermal_tolerance_k.
     int film_nodes = 11;              // nodes across the film, both surfaces included [-]
