@@ -117,8 +117,26 @@ LineContactSolver::Summary LineContactSolver::Impl::Newton(const ContactConditio
     trial.travel2_m = from.travel2_m;
     return Residual(c, fluid, sc, td, &trial, &f_trial, false);
   };
+  // Inexact Newton (Eisenstat & Walker 1996, choice 2): the linear solve's relative tolerance
+  // follows the residual's decrease; never tighter than needed to reach the tolerance.
+  // The forcing term is capped at 1e-3: measured at M = 20, L = 10 (513 ... 16385 nodes), a cap
+  // of 0.1 let inexact steps upset the cavitation set (16385 nodes, warm: 23 Newton iterations
+  // instead of 5); 1e-3 keeps the Newton counts and saves 15-30 % of the GMRES iterations.
+  constexpr double kEtaMax = 1e-3;
+  double eta = kEtaMax, norm2_prev = -1.0;
   for (int it = 0; it < opt_.max_iterations; ++it) {
     if (norm < opt_.tolerance) break;
+    if (opt_.inexact_newton) {
+      const double norm2 = f.norm();
+      if (norm2_prev > 0) {
+        const double ew = 0.9 * std::pow(norm2 / norm2_prev, 2.0);
+        const double safeguard = 0.9 * eta * eta;
+        eta = std::min(kEtaMax, safeguard > 0.1 ? std::max(ew, safeguard) : ew);
+      }
+      eta = std::max({eta, 1e-10, 0.05 * opt_.tolerance / norm});
+      norm2_prev = norm2;
+      linear_->SetRelativeTolerance(eta);
+    }
     ns.cavitated = cavitated_;
     std::string why;
     if (!linear_->Solve(ns, -f, &dz, &why)) {

@@ -33,7 +33,7 @@ class NewtonKrylovSolver final : public NewtonLinearSolver {
     if (factored_n_ == sys.n) {
       const int limit = std::min(2 * fresh_iterations_ + 10, settings_.max_iterations);
       g = Gmres(apply, precondition, rhs, dz, settings_.restart, limit,
-                settings_.relative_tolerance);
+                Tolerance());
       last_iterations_ = g.iterations;
     }
     if (!g.converged) {
@@ -42,7 +42,7 @@ class NewtonKrylovSolver final : public NewtonLinearSolver {
       if (!pre_.Factorize(sys, settings_.band, why)) return false;
       factored_n_ = sys.n;
       g = Gmres(apply, precondition, rhs, dz, settings_.restart, settings_.max_iterations,
-                settings_.relative_tolerance);
+                Tolerance());
       fresh_iterations_ = g.iterations;
       last_iterations_ += g.iterations;
     }
@@ -55,10 +55,13 @@ class NewtonKrylovSolver final : public NewtonLinearSolver {
     return true;
   }
   int last_krylov_iterations() const override { return last_iterations_; }
+  void SetRelativeTolerance(double tolerance) override { forcing_ = tolerance; }
   std::string Name() const override { return "newton_krylov"; }
 
  private:
+  double Tolerance() const { return forcing_ > 0 ? forcing_ : settings_.relative_tolerance; }
   KrylovSettings settings_;
+  double forcing_ = 0;  // inexact Newton tolerance of the next solve, 0 = settings_
   FilmAugmentedPreconditioner pre_;
   int factored_n_ = 0;        // n of the current factorization, 0 = none
   int fresh_iterations_ = 0;  // GMRES iterations right after the last factorization

@@ -51,6 +51,9 @@ class NewtonLinearSolver {
   virtual bool Solve(const NewtonSystem& system, const Eigen::VectorXd& rhs,
                      Eigen::VectorXd* dz, std::string* why) = 0;
   virtual int last_krylov_iterations() const { return 0; }
+  // Relative tolerance of the next iterative solve (an inexact Newton forcing term); <= 0
+  // restores the solver's own setting. Direct solvers ignore it.
+  virtual void SetRelativeTolerance(double /*tolerance*/) {}
   virtual std::string Name() const = 0;
 };
 

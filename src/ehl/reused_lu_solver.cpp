@@ -26,7 +26,7 @@ class ReusedLuSolver final : public NewtonLinearSolver {
       };
       dz->setZero(rhs.size());
       const GmresResult g = Gmres(apply, precondition, rhs, dz, settings_.restart,
-                                  settings_.max_iterations, settings_.relative_tolerance);
+                                  settings_.max_iterations, Tolerance());
       last_iterations_ = g.iterations;
       if (g.converged && dz->allFinite()) return true;
     }
@@ -42,10 +42,13 @@ class ReusedLuSolver final : public NewtonLinearSolver {
     return true;
   }
   int last_krylov_iterations() const override { return last_iterations_; }
+  void SetRelativeTolerance(double tolerance) override { forcing_ = tolerance; }
   std::string Name() const override { return "reused_lu"; }
 
  private:
+  double Tolerance() const { return forcing_ > 0 ? forcing_ : settings_.relative_tolerance; }
   KrylovSettings settings_;
+  double forcing_ = 0;  // inexact Newton tolerance of the next solve, 0 = settings_
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   bool factored_ = false;
   int factorizations_ = 0;

@@ -111,6 +111,9 @@ class LineContactSolver {
     // Newton from the last solution scaled by Hertz similarity (docs/theory.md, "Warm starts"):
     // a cavitation boundary otherwise advances by about one cell per Newton iteration.
     bool predict_hertz_similar = true;
+    // Iterative linear solvers: GMRES stops at the Eisenstat-Walker forcing term (choice 2,
+    // gamma 0.9, alpha 2, at most 1e-3) instead of a fixed 1e-10 (docs/theory.md).
+    bool inexact_newton = true;
     // Thermal runs: the pressure solve and the energy solve alternate (the temperature
     // under-relaxed) until the temperature changes by less than thermal_tolerance_k.
     int film_nodes = 11;              // nodes across the film, both surfaces included [-]
