@@ -258,17 +258,26 @@ LineContactSolver::Summary LineContactSolver::Impl::Solve(const ContactCondition
     *s = InitialGuess(ContactConditions{c.reduced_radius_m, c.u1_m_s, c.u2_m_s,
                                         0.05 * c.load_n_per_m, c.temperature_k});
     double theta = 0.05, growth = 2.0;
+    ContactConditions c_good = c;  // the conditions *s solves once a stage has converged
+    bool have_good = false;
+    double theta_good = 0.0;  // the load fraction *s solves
     Summary stage;
     while (stages < opt_.max_continuation_stages) {
       ContactConditions ci = c;
       ci.load_n_per_m = theta * c.load_n_per_m;
       FilmState trial = *s;
+      // Each stage raises the load: start it from the last stage's film scaled to the new
+      // Hertz zone, so its outlet does not have to creep there one cell per iteration.
+      if (have_good) PredictHertzSimilar(c_good, ci, &trial);
       stage = Newton(ci, theta, td, &trial);
       ++stages;
       total += stage.total_iterations;
       krylov += stage.krylov_iterations;
       if (stage.usable()) {
         *s = trial;
+        c_good = ci;
+        have_good = true;
+        theta_good = theta;
         if (theta >= 1.0) break;
         theta = std::min(1.0, theta * growth);
       } else {
@@ -278,7 +287,14 @@ LineContactSolver::Summary LineContactSolver::Impl::Solve(const ContactCondition
       }
     }
     sum = stage;
-    if (!sum.usable()) {
+    if (sum.usable() && theta_good < 1.0) {
+      // The stages ran out below the full load: the film solves a fraction of it only.
+      sum.termination = Termination::kMaxIterations;
+      sum.message = "no convergence directly (" + first_failure +
+                    "); continuation in load and pressure-viscosity coefficient reached " +
+                    internal::FormatReal(theta_good) + " of the load in " +
+                    std::to_string(stages) + " stages";
+    } else if (!sum.usable()) {
       sum.message = "no convergence directly (" + first_failure +
                     ") nor by continuation in "
                     "load and pressure-viscosity coefficient (" +
@@ -289,6 +305,8 @@ LineContactSolver::Summary LineContactSolver::Impl::Solve(const ContactCondition
   sum.total_iterations = total;
   sum.krylov_iterations = krylov;
   sum.continuation_stages = stages;
+  if (s->valid())  // against the full load, whatever stage the state comes from
+    sum.load_error = std::abs(grid_.dx_m() * s->p_pa.sum() - c.load_n_per_m) / c.load_n_per_m;
   sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
   return sum;
 }

@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <limits>
+#include <string>
 
 #include "verification/ehl_moes_point.hpp"
 
@@ -26,6 +27,8 @@ void ExpectConvergedOrDiagnosed(const MoesPoint& mp, int n) {
               mp.M, mp.L, mp.Hertz().max_pressure_pa / 1e9, n, sum.BriefReport().c_str(),
               ms.Hc(st), ms.Hmin(st), st.MaxPressure() / mp.Hertz().max_pressure_pa);
   if (!sum.usable()) EXPECT_FALSE(sum.message.empty());
+  // A converged film carries the whole load (the load row is part of the residual).
+  if (sum.usable()) EXPECT_LT(sum.load_error, 1e-8);
   ASSERT_TRUE(st.valid());
   EXPECT_EQ(st.p_pa.size(), n);
   EXPECT_TRUE(st.p_pa.allFinite());
@@ -50,6 +53,24 @@ TEST(HardCasesVerification, SteelAtFourGigapascal) {
   const MoesPoint mp{500, 10};
   EXPECT_NEAR(mp.Hertz().max_pressure_pa / 1e9, 3.99, 0.005);
   ExpectConvergedOrDiagnosed(mp, 513);
+}
+
+// Continuation raises the load from 5 % in stages. A run whose stages end below the full
+// load must not report convergence: its film carries only part of the load. (It once did:
+// M = 1000, L = 2 on 2049 nodes returned "converged" with p_max = 0.27 p_H after 12 stages.)
+TEST(HardCasesVerification, ContinuationThatEndsBelowTheFullLoadIsNotConverged) {
+  const MoesPoint mp{1000, 2};  // p_H = 1.13 GPa; on 1025 nodes it needs 6 stages
+  LineContactSolver::Options opt;
+  opt.max_continuation_stages = 3;  // 0.05, 0.1, 0.2 of the load
+  MoesSolver ms(mp, 1025, opt);
+  FilmState st;
+  const auto sum = ms.solver.SolveSteady(mp.Conditions(), &st);
+  std::printf("%s\n", sum.BriefReport().c_str());
+  EXPECT_FALSE(sum.usable());
+  EXPECT_GT(sum.load_error, 0.5);  // the state solves 0.2 of the load at most
+  EXPECT_NE(sum.message.find("of the load"), std::string::npos) << sum.message;
+  EXPECT_TRUE(st.p_pa.allFinite());
+  EXPECT_GE(st.p_pa.minCoeff(), 0.0);
 }
 
 TEST(HardCasesVerification, InvalidConditionsAreReportedNotThrown) {
