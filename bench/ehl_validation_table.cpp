@@ -77,7 +77,8 @@ Row Refine(const MoesPoint& mp) {
       row.usable = false;
       row.failure = "n = " + std::to_string(n) + ": " + sum.BriefReport();
       row.study.push_back({n, std::nan(""), sum.linear_solver, sec});
-      std::fprintf(stderr, "  n = %d: no convergence (%.1f s)\n", n, sec);
+      std::fprintf(stderr, "  n = %d: no convergence: %s (%.1f s)\n", n,
+                   sum.BriefReport().c_str(), sec);
       previous = 0;  // the 0.5 % criterion compares two successive converged grids
       if (2 * n - 1 > kMaxNodes) break;
       continue;
@@ -86,8 +87,11 @@ Row Refine(const MoesPoint& mp) {
     row.hc = ms->Hc(st);
     row.hmin = ms->Hmin(st);
     row.study.push_back({n, row.hc, sum.linear_solver, sec});
-    std::fprintf(stderr, "  n = %d: H_c = %.5f, H_min = %.5f, %s, %d Newton its (%.1f s)\n", n,
-                 row.hc, row.hmin, sum.linear_solver.c_str(), sum.iterations, sec);
+    std::fprintf(stderr,
+                 "  n = %d: H_c = %.5f, H_min = %.5f, %s, %d Newton its, %d continuation "
+                 "stages, load error %.1e (%.1f s)\n",
+                 n, row.hc, row.hmin, sum.linear_solver.c_str(), sum.iterations,
+                 sum.continuation_stages, sum.load_error, sec);
     if (previous > 0 && std::abs(row.hc - previous) < kGridTolerance * row.hc) break;
     previous = row.hc;
     if (2 * n - 1 > kMaxNodes) row.capped = true;
