@@ -77,8 +77,8 @@ Row Refine(const MoesPoint& mp) {
       row.usable = false;
       row.failure = "n = " + std::to_string(n) + ": " + sum.BriefReport();
       row.study.push_back({n, std::nan(""), sum.linear_solver, sec});
-      std::fprintf(stderr, "  n = %d: no convergence: %s (%.1f s)\n", n,
-                   sum.BriefReport().c_str(), sec);
+      std::fprintf(stderr, "  n = %d: no convergence: %s (%.1f s)\n", n, sum.BriefReport().c_str(),
+                   sec);
       previous = 0;  // the 0.5 % criterion compares two successive converged grids
       if (2 * n - 1 > kMaxNodes) break;
       continue;
