@@ -2,7 +2,7 @@
 //
 // For every point of the VALIDATION.md section 3 table (M = 10 .. 1000, L = 2 .. 20) with
 // p_H <= 2 GPa, the steady film is solved on 257 nodes and the grid doubled until H_c changes
-// by less than 0.5 % on doubling (capped at 16385 nodes, flagged when reached). Each grid uses
+// by less than 0.5 % on doubling (capped at 32769 nodes, flagged when reached). Each grid uses
 // the default solver choice (kAuto: reused dense LU up to dense_max_nodes, Newton-Krylov
 // above); if Newton-Krylov does not converge on a grid of at most 4097 nodes, the grid is
 // solved again with the reused dense LU, and every row names the solver that gave it. Prints a
@@ -27,7 +27,7 @@ using tehl::testing::MoesPoint;
 using tehl::testing::MoesSolver;
 
 constexpr int kFirstNodes = 257;
-constexpr int kMaxNodes = 16385;
+constexpr int kMaxNodes = 32769;
 // Dense fallback only up to 4097 nodes: the dense Jacobian is O(n^2) memory and its LU
 // O(n^3) time (about a minute at 4097 nodes, docs/performance.md).
 constexpr int kDenseFallbackMaxNodes = 4097;
