@@ -33,19 +33,28 @@ int RunGear(const RunArgs& a) {
   }
   if (r.resumed_from_step > 0)
     std::printf("resumed from the checkpoint at step %d\n", r.resumed_from_step);
-  const MeshCycleStep& pitch = r.steps[r.PitchStep()];
+  // A cycle that stopped reports only its converged steps (those before the failed one).
+  size_t ok = 0;
+  while (ok < r.steps.size() && r.steps[ok].summary.usable()) ++ok;
   std::printf("mesh cycle A..E: %zu of %d steps (%s), grid %zu nodes, %.1f s\n", r.steps.size() - 1,
               r.planned_steps, r.step_rule.c_str(), r.x_m.size(), r.wall_time_s);
-  std::printf("at the pitch point (s = %.4g mm): h_c = %.6g m, h_min = %.6g m, p_max = %.6g Pa\n",
-              pitch.s_m * 1e3, pitch.h_c_m, pitch.h_min_m, pitch.p_max_pa);
-  if (r.thermal) {  // the hottest step and the mean friction along the path
-    const auto hottest =
-        std::max_element(r.steps.begin(), r.steps.end(),
-                         [](const auto& a, const auto& b) { return a.t_max_k < b.t_max_k; });
+  const size_t pitch_step = static_cast<size_t>(r.PitchStep());
+  if (pitch_step < ok && (ok == r.steps.size() || r.steps[ok - 1].s_m >= r.s_c_m)) {
+    const MeshCycleStep& pitch = r.steps[pitch_step];
+    std::printf("at the pitch point (s = %.4g mm): h_c = %.6g m, h_min = %.6g m, p_max = %.6g Pa\n",
+                pitch.s_m * 1e3, pitch.h_c_m, pitch.h_min_m, pitch.p_max_pa);
+  } else {
+    std::printf("the cycle stopped before the pitch point (s = %.4g mm)\n", r.s_c_m * 1e3);
+  }
+  if (r.thermal && ok > 0) {  // the hottest converged step and the mean friction along the path
+    const auto end = r.steps.begin() + static_cast<std::ptrdiff_t>(ok);
+    const auto hottest = std::max_element(
+        r.steps.begin(), end, [](const auto& a, const auto& b) { return a.t_max_k < b.t_max_k; });
     double mu = 0;
-    for (const auto& k : r.steps) mu += k.friction_coefficient;
-    std::printf("thermal: T_max = %.5g K at s = %.4g mm (SRR %+.3f), mean mu = %.4g\n",
-                hottest->t_max_k, hottest->s_m * 1e3, hottest->srr, mu / r.steps.size());
+    for (auto k = r.steps.begin(); k != end; ++k) mu += k->friction_coefficient;
+    std::printf("thermal: T_max = %.5g K at s = %.4g mm (SRR %+.3f), mean mu = %.4g%s\n",
+                hottest->t_max_k, hottest->s_m * 1e3, hottest->srr, mu / static_cast<double>(ok),
+                ok == r.steps.size() ? "" : " (converged steps)");
   }
   std::printf("wrote %s%s%s\n", r.hdf5_path.c_str(), r.csv_path.empty() ? "" : " and ",
               r.csv_path.c_str());

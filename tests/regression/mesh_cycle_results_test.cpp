@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -174,6 +175,28 @@ TEST(MeshCycleResults, PlotWritesTheThreeFiguresAndRejectsAMissingFile) {
   const int status = std::system((tehl + " plot '" + dir + "/missing.h5' >/dev/null 2>&1").c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);
+}
+
+// A cycle that stops at its first step (two Newton iterations allowed: the film at A cannot
+// converge) exits 1, names the failed step, and prints no film "at the pitch point" (it never
+// got there) nor a temperature of the failed step (STYLE.md: never a silent wrong answer).
+TEST(MeshCycleResults, StoppedCycleReportsNoPitchPointValues) {
+  const std::string dir = TempDirFor("stopped");
+  fs::create_directories(dir);
+  const std::string case_path = ReducedCase(
+      "seed004_sae40", Reduced({{"grid_points", "129"}, {"max_newton_iterations", "2"}}));
+  const std::string out = dir + "/stdout.txt", err = dir + "/stderr.txt";
+  const int status = std::system(("'" + std::string(TEHL_BINARY) + "' run '" + case_path +
+                                  "' -q -o '" + dir + "' >'" + out + "' 2>'" + err + "'")
+                                     .c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);  // not converged (STYLE.md section 5)
+  const std::string stdout_text = ReadText(out), stderr_text = ReadText(err);
+  EXPECT_NE(stdout_text.find("the cycle stopped before the pitch point"), std::string::npos)
+      << stdout_text;
+  EXPECT_EQ(stdout_text.find("at the pitch point ("), std::string::npos) << stdout_text;
+  EXPECT_NE(stderr_text.find("step 0 (s = 0 mm) did not converge"), std::string::npos)
+      << stderr_text;
 }
 
 TEST(MeshCycleResults, KilledRunLeavesNoFileUnderTheFinalName) {
