@@ -4,6 +4,7 @@
 
 #include <Eigen/Sparse>
 #include <algorithm>
+#include <vector>
 
 #include "ehl/newton_system.hpp"
 #include "tehl/ehl/elastic_deflection.hpp"
@@ -14,6 +15,82 @@ namespace {
 // n = 8193, half-band 8 (GMRES iterations per Newton step / UMFPACK flops): no levels 25 / 1e7
 // (and growing like sqrt(n)), ratio 16: 12 / 3.5e7, ratio 8: 9 / 3.8e7 (slower to factorize).
 constexpr int kLevelRatio = 16;
+
+// The strict triangle of a factor, from UMFPACK's compressed rows of L (or columns of U) whose
+// last entry is the diagonal, stored as runs of consecutive column (row) indices: row i owns
+// the runs first[i] .. first[i+1]-1, and run r the values offset[r] .. offset[r+1]-1 at the
+// indices index[r], index[r]+1, ... The factors of the augmented matrix come in dense blocks
+// (about 2 runs of 10-20 entries per row or column at 16385 nodes), so a solve reads contiguous
+// stretches of the work vector and almost no indices (8 instead of 12 bytes per entry; the
+// solve is memory bound). Float values were tried (measured in docs/performance.md): twice as
+// fast again and the same GMRES counts, but the full-band solve then misses J^{-1} by 3-17 %.
+struct RunTriangle {
+  std::vector<int> first, index, offset;
+  std::vector<double> value, inv_diag;  // inv_diag: 1 / diagonal (U only)
+
+  void Build(int size, const int* ptr, const int* idx, const double* val, bool keep_diag) {
+    first.resize(size + 1);
+    value.resize(ptr[size] - size);  // every entry but the diagonal
+    index.clear();
+    offset.clear();
+    inv_diag.resize(keep_diag ? size : 0);
+    double* out = value.data();
+    int written = 0;
+    for (int i = 0; i < size; ++i) {
+      first[i] = static_cast<int>(index.size());
+      const int end = ptr[i + 1] - 1;  // the diagonal
+      for (int p = ptr[i]; p < end; ++p) {
+        if (p == ptr[i] || idx[p] != idx[p - 1] + 1) {
+          index.push_back(idx[p]);
+          offset.push_back(written);
+        }
+        out[written++] = val[p];
+      }
+      if (keep_diag) inv_diag[i] = 1.0 / val[end];
+    }
+    first[size] = static_cast<int>(index.size());
+    offset.push_back(written);
+  }
+  void Release() {
+    for (auto* v : {&first, &index, &offset}) std::vector<int>().swap(*v);
+    std::vector<double>().swap(value);
+    std::vector<double>().swap(inv_diag);
+  }
+  // z <- L^{-1} z for a unit lower triangular L stored by rows (four partial sums per row).
+  void ForwardUnit(int size, double* z) const {
+    for (int i = 0; i < size; ++i) {
+      double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+      for (int r = first[i]; r < first[i + 1]; ++r) {
+        const double* v = value.data() + offset[r];
+        const double* x = z + index[r];
+        const int len = offset[r + 1] - offset[r];
+        int t = 0;
+        for (; t + 4 <= len; t += 4) {
+          s0 += v[t] * x[t];
+          s1 += v[t + 1] * x[t + 1];
+          s2 += v[t + 2] * x[t + 2];
+          s3 += v[t + 3] * x[t + 3];
+        }
+        for (; t < len; ++t) s0 += v[t] * x[t];
+      }
+      z[i] -= (s0 + s1) + (s2 + s3);
+    }
+  }
+  // z <- U^{-1} z for an upper triangular U stored by columns: each column is subtracted once
+  // its unknown is known.
+  void Backward(int size, double* z) const {
+    for (int j = size - 1; j >= 0; --j) {
+      const double w = z[j] * inv_diag[j];
+      z[j] = w;
+      for (int r = first[j]; r < first[j + 1]; ++r) {
+        const double* v = value.data() + offset[r];
+        double* x = z + index[r];
+        const int len = offset[r + 1] - offset[r];
+        for (int t = 0; t < len; ++t) x[t] -= v[t] * w;
+      }
+    }
+  }
+};
 }  // namespace
 
 struct FilmAugmentedPreconditioner::Impl {
@@ -26,6 +103,12 @@ struct FilmAugmentedPreconditioner::Impl {
   int n = 0, band = -1, ratio = -1;  // pattern of the last symbolic analysis
   mutable Eigen::VectorXd rhs, sol, work;
   mutable std::vector<int> iwork;
+  // P R A Q = L U as extracted from the Numeric object (umfpack_get_numeric.h): row k of P R A
+  // is row perm_row[k] of A times scale[k]; column k of A Q is column perm_col[k] of A.
+  RunTriangle lower, upper;
+  std::vector<int> perm_row, perm_col;
+  std::vector<double> scale;
+  bool extracted = false;  // the factors above are valid (else Solve uses `numeric`)
 
   Impl() {
     umfpack_di_defaults(control);
@@ -40,7 +123,40 @@ struct FilmAugmentedPreconditioner::Impl {
     if (numeric) umfpack_di_free_numeric(&numeric);
     if (symbolic) umfpack_di_free_symbolic(&symbolic);
   }
+  // Takes the factors out of `numeric` and frees it. False (keeping `numeric` for
+  // umfpack_di_wsolve) if UMFPACK refuses or a row of L / column of U does not end with its
+  // nonzero diagonal.
+  bool ExtractFactors(int size);
 };
+
+bool FilmAugmentedPreconditioner::Impl::ExtractFactors(int size) {
+  int lnz = 0, unz = 0, rows = 0, cols = 0, udiag = 0, do_recip = 0;
+  if (umfpack_di_get_lunz(&lnz, &unz, &rows, &cols, &udiag, numeric) != UMFPACK_OK ||
+      rows != size || cols != size || udiag != size)
+    return false;
+  // UMFPACK's own arrays, released once converted (they exist only during the extraction).
+  std::vector<int> lp(size + 1), lj(lnz), up(size + 1), ui(unz);
+  std::vector<double> lx(lnz), ux(unz), rs(size);
+  perm_row.resize(size);
+  perm_col.resize(size);
+  if (umfpack_di_get_numeric(lp.data(), lj.data(), lx.data(), up.data(), ui.data(), ux.data(),
+                             perm_row.data(), perm_col.data(), nullptr, &do_recip, rs.data(),
+                             numeric) != UMFPACK_OK)
+    return false;
+  for (int i = 0; i < size; ++i)
+    if (lp[i + 1] <= lp[i] || lj[lp[i + 1] - 1] != i || up[i + 1] <= up[i] ||
+        ui[up[i + 1] - 1] != i || ux[up[i + 1] - 1] == 0.0)
+      return false;
+  umfpack_di_free_numeric(&numeric);
+  scale.resize(size);
+  for (int k = 0; k < size; ++k) {
+    const double r = rs[perm_row[k]];  // R = diag(Rs) or diag(Rs)^{-1}
+    scale[k] = do_recip ? r : 1.0 / r;
+  }
+  lower.Build(size, lp.data(), lj.data(), lx.data(), false);
+  upper.Build(size, up.data(), ui.data(), ux.data(), true);
+  return true;
+}
 
 FilmAugmentedPreconditioner::FilmAugmentedPreconditioner() : impl_(std::make_unique<Impl>()) {}
 FilmAugmentedPreconditioner::~FilmAugmentedPreconditioner() = default;
@@ -144,6 +260,10 @@ bool FilmAugmentedPreconditioner::Factorize(const NewtonSystem& sys, int band, s
     ++symbolic_analyses_;
   }
   if (d.numeric) umfpack_di_free_numeric(&d.numeric);
+  // The old factors go first: they would otherwise coexist with the new Numeric object.
+  d.extracted = false;
+  d.lower.Release();
+  d.upper.Release();
   const int status = umfpack_di_numeric(cp, ri, v, d.symbolic, &d.numeric, d.control, d.info);
   if (status != UMFPACK_OK) {  // singular (status 1) included: the solve would give inf
     if (d.numeric) umfpack_di_free_numeric(&d.numeric);
@@ -153,7 +273,8 @@ bool FilmAugmentedPreconditioner::Factorize(const NewtonSystem& sys, int band, s
         std::to_string(status) + ")";
     return false;
   }
-  d.iwork.resize(size);
+  d.extracted = d.ExtractFactors(size);
+  d.iwork.resize(d.extracted ? 0 : size);
   d.work.resize(size);
   return true;
 }
@@ -165,9 +286,19 @@ void FilmAugmentedPreconditioner::Solve(const Eigen::VectorXd& x, Eigen::VectorX
   d.rhs.head(m) = x.head(m);
   d.rhs[m + n] = x[m];
   d.sol.resize(2 * n - 1);
-  umfpack_di_wsolve(UMFPACK_A, d.matrix.outerIndexPtr(), d.matrix.innerIndexPtr(),
-                    d.matrix.valuePtr(), d.sol.data(), d.rhs.data(), d.numeric, d.control, nullptr,
-                    d.iwork.data(), d.work.data());
+  if (d.extracted) {
+    // x = Q U^{-1} L^{-1} P R b.
+    const int size = 2 * n - 1;
+    double* z = d.work.data();
+    for (int k = 0; k < size; ++k) z[k] = d.scale[k] * d.rhs[d.perm_row[k]];
+    d.lower.ForwardUnit(size, z);
+    d.upper.Backward(size, z);
+    for (int k = 0; k < size; ++k) d.sol[d.perm_col[k]] = z[k];
+  } else {
+    umfpack_di_wsolve(UMFPACK_A, d.matrix.outerIndexPtr(), d.matrix.innerIndexPtr(),
+                      d.matrix.valuePtr(), d.sol.data(), d.rhs.data(), d.numeric, d.control,
+                      nullptr, d.iwork.data(), d.work.data());
+  }
   y->resize(m + 1);
   y->head(m) = d.sol.head(m);
   (*y)[m] = d.sol[m + n];

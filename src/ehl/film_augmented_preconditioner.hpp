@@ -21,6 +21,13 @@
 // The matrix (2n - 1 unknowns) is factorized by UMFPACK (symmetric strategy); the symbolic
 // analysis is kept while n and the band do not change (the pattern does not depend on the
 // cavitated set: cavitated Reynolds rows keep their stencil entries as explicit zeros).
+// After each factorization the factors P R A Q = L U are taken out of UMFPACK once
+// (umfpack_di_get_numeric; R the row scaling) and UMFPACK's Numeric object is freed; Solve
+// runs its own substitutions: scale and permute, L by rows (unit diagonal), U by columns,
+// permute. The factors are stored as runs of consecutive indices (they come in dense blocks),
+// so the solve reads few indices and contiguous stretches of the vector: 1.5-2.3x faster per
+// solve than umfpack_di_wsolve at n = 2049 .. 16385, same result to 1e-11 relative; the
+// extraction costs ~18 % of a numeric factorization (docs/performance.md).
 #pragma once
 
 #include <Eigen/Core>
