@@ -2,15 +2,15 @@
 // triangular factors taken out of UMFPACK. With a half-band >= n nothing is truncated, so
 // eliminating the film unknowns reproduces the Jacobian J of newton_system.hpp exactly
 // (derivation in film_augmented_preconditioner.hpp) and the solve is a direct solve of J.
+#include "ehl/film_augmented_preconditioner.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
-
 #include <cstdio>
 #include <random>
 #include <string>
 
-#include "ehl/film_augmented_preconditioner.hpp"
 #include "ehl/newton_system.hpp"
 #include "tehl/ehl/elastic_deflection.hpp"
 
