@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -29,6 +30,8 @@ constexpr double kCouplingMapPressureTolerance = 1e-11;  // [-]
 constexpr int kMinThermalCoarseNodes = 65;
 // Newton tolerance of the early thermal coupling iterations [-].
 constexpr double kCouplingNewtonTolerance = 1e-5;
+// Halvings of a temperature update whose pressure solve fails [-].
+constexpr int kMaxTemperatureBackoffs = 4;
 }  // namespace
 
 FilmFriction LineContactSolver::Impl::Friction(const ContactConditions& c, const FilmState& st) {
@@ -173,18 +176,52 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
   int since_best = 0;
   Eigen::MatrixXd best_t;
   FilmState best_s;
+  FilmState good_s;        // the last settled pressure ...
+  Eigen::MatrixXd good_t;  // ... and its temperature
+  int backoffs = 0;
   for (int k = 0; k < opt_.max_coupling_iterations && !settled; ++k) {
     // Inexact coupling: while the temperature still moves by more than 10x its tolerance,
     // the pressure need not be solved to the final tolerance.
     opt_.tolerance = change_t > 10 * opt_.thermal_tolerance_k
                          ? std::max(newton_tolerance, kCouplingNewtonTolerance)
                          : newton_tolerance;
+    // After the first coupling iteration a failed pressure solve backs off along the
+    // temperature update instead of falling back on load continuation: the pressure is
+    // solved again from the last settled pressure at T_good + theta (T - T_good), theta =
+    // 1/2, 1/4, ... (a trust region on the temperature step; docs/thermal.md, "Thermal
+    // coupling"). The coupling then goes on from the backed-off temperature.
+    const bool can_back_off = eff_.thermal && good_t.size() > 0;
+    const int continuation_stages = opt_.max_continuation_stages;
+    if (can_back_off) opt_.max_continuation_stages = 0;
     sum = Solve(c, td, s);
-    opt_.tolerance = newton_tolerance;
     total += sum.total_iterations;
     krylov += sum.krylov_iterations;
     stages += sum.continuation_stages;
+    if (!sum.usable() && can_back_off) {
+      const Eigen::MatrixXd t_target = field_->film_temperature();
+      for (int b = 1; b <= kMaxTemperatureBackoffs && !sum.usable(); ++b) {
+        field_->SetTemperature(good_t + std::ldexp(1.0, -b) * (t_target - good_t));
+        *s = good_s;
+        sum = Solve(c, td, s);
+        total += sum.total_iterations;
+        krylov += sum.krylov_iterations;
+        ++backoffs;
+      }
+      opt_.max_continuation_stages = continuation_stages;
+      if (!sum.usable() && continuation_stages > 0) {  // last resort: the full update with
+        field_->SetTemperature(t_target);               // load continuation
+        *s = good_s;
+        sum = Solve(c, td, s);
+        total += sum.total_iterations;
+        krylov += sum.krylov_iterations;
+        stages += sum.continuation_stages;
+      }
+    }
+    opt_.max_continuation_stages = continuation_stages;
+    opt_.tolerance = newton_tolerance;
     if (!sum.usable()) break;
+    good_s = *s;
+    good_t = field_->film_temperature();
     ++coupling;
     // Pressure change between coupling iterations, relative to p_max.
     if (p_last.size() == s->p_pa.size())
@@ -222,8 +259,8 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
       }
     }
     if (std::getenv("TEHL_DEBUG_COUPLING"))
-      std::fprintf(stderr, "coupling %d: newton %d dT %g df %g dp %g balance %g\n", k,
-                   sum.total_iterations, change_t, change_f, change_p, balance);
+      std::fprintf(stderr, "coupling %d: newton %d dT %g df %g dp %g balance %g backoffs %d\n",
+                   k, sum.total_iterations, change_t, change_f, change_p, balance, backoffs);
     // Thermal: the temperature settles. Non-Newtonian: the pressure settles (the Eyring factor
     // itself is spiky where dp/dx is large, so its own change is not the measure).
     settled = change_t < opt_.thermal_tolerance_k &&
@@ -268,6 +305,7 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
   sum.krylov_iterations = krylov;
   sum.continuation_stages = stages;
   sum.coupling_iterations = coupling;
+  sum.temperature_backoffs = backoffs;
   sum.temperature_change_k = change_t;
   sum.energy_balance_error = balance;
   sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -127,6 +127,8 @@ std::string LineContactSolver::Summary::BriefReport() const {
       << temperature_change_k << " K, energy balance " << energy_balance_error << ")";
   if (coupling_newton_iterations)
     o << ", " << coupling_newton_iterations << " coupling Newton steps";
+  if (temperature_backoffs)
+    o << ", " << temperature_backoffs << " temperature step halvings";
   o << ", residual " << residual << ", load error " << load_error << ", " << linear_solver << ", "
     << wall_time_s << " s";
   if (!usable()) o << ": " << message;

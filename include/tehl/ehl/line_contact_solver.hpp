@@ -155,6 +155,8 @@ class LineContactSolver {
     double temperature_change_k = -1;  // [K]
     double energy_balance_error = -1;  // [-]
     int coupling_newton_iterations = 0;  // Newton steps on the coupling (0 = not needed) [-]
+    int temperature_backoffs = 0;  // halvings of coupling temperature steps whose pressure
+                                   // solve failed (docs/thermal.md) [-]
     bool usable() const { return termination == Termination::kConverged; }
     std::string BriefReport() const;
   };
