@@ -45,8 +45,8 @@ int main(int argc, char** argv) {
   std::printf(
       "| L_T | um [m/s] | SRR | h_c iso [um] | h_c thermal [um] | ratio | phi_T | "
       "ratio/phi_T - 1 | within 15 %% | T_max - T0 [K] | mu | balance error | "
-      "coupling it. | time [s] |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "coupling it. | T back-offs | time [s] |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int outside = 0, failed = 0;
   for (double l_t : kLoadings) {
     disc.um_m_s = tehl::testing::SpeedForLoading(oil, l_t);
@@ -66,8 +66,11 @@ int main(int argc, char** argv) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if (!sum.usable() || !isum.usable()) {
         ++failed;
-        std::printf("| %.1f | %.3f | %.2f | failed: %s |\n", l_t, disc.um_m_s, srr,
-                    (!isum.usable() ? isum : sum).BriefReport().c_str());
+        std::printf(
+            "| %.1f | %.3f | %.2f | failed: %s (%d coupling it., %d T back-offs, %.1f s) |\n", l_t,
+            disc.um_m_s, srr, (!isum.usable() ? isum : sum).BriefReport().c_str(),
+            sum.coupling_iterations, sum.temperature_backoffs, seconds);
+        std::fflush(stdout);
         continue;
       }
       const double ratio = st.CentralFilm(th.grid()) / hc_iso;
@@ -76,11 +79,11 @@ int main(int argc, char** argv) {
       if (!in) ++outside;
       std::printf(
           "| %.1f | %.3f | %.2f | %.4f | %.4f | %.3f | %.3f | %+.1f %% | %s | %.2f | "
-          "%.4f | %.1e | %d | %.1f |\n",
+          "%.4f | %.1e | %d | %d | %.1f |\n",
           l_t, disc.um_m_s, srr, hc_iso * 1e6, st.CentralFilm(th.grid()) * 1e6, ratio, phi,
           100.0 * (ratio / phi - 1.0), in ? "yes" : "**no**",
           st.temperature.MaxTemperature() - c.temperature_k, th.Friction(c, st).coefficient,
-          sum.energy_balance_error, sum.coupling_iterations, seconds);
+          sum.energy_balance_error, sum.coupling_iterations, sum.temperature_backoffs, seconds);
       std::fflush(stdout);
     }
   }
