@@ -6,11 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <random>
 
 #include "ehl/film_augmented_preconditioner.hpp"
 #include "ehl/newton_system.hpp"
-#include "tehl/ehl/elastic_deflection.hpp"
+#include "support/random_newton_system.hpp"
 #include "verification/ehl_moes_point.hpp"
 
 namespace tehl {
@@ -62,37 +61,10 @@ TEST(LinearSolversVerification, DenseAndNewtonKrylovAgreeOn4097Nodes) { ExpectSa
 // errors of order 0.1 - 1. Tolerance 1e-6. n - 1 = 299 is not a multiple of the level strides
 // (16, 256), which exercises the clamped right neighbours; some rows are cavitated.
 void ExpectExactWithFullBand(int n) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(0.5, 1.5);
-  const double dx = 1e-6, e_prime = 226.4e9;  // [m], [Pa]
-  const ElasticDeflection k(n, dx, e_prime, FftPlanEffort::kEstimate);
-  Eigen::Matrix<double, Eigen::Dynamic, 4> a(n, 4), b(n, 4);
-  Eigen::VectorXd c(n);
-  const double p_ref = 1e9, h_ref = 1e-7;  // [Pa], [m]
-  for (int i = 0; i < n; ++i) {
-    // A Poiseuille-like (-1, 2, -1) stencil plus upwind-like Couette weights, perturbed, sized
-    // so that the scaled rows c_i (p_ref A + h_ref B) have entries of order one (as the row
-    // weights of the solver make them): J is then well conditioned.
-    a.row(i) << 0.1 * u(rng), -1.0 * u(rng), 2.0 * u(rng), -1.0 * u(rng);
-    b.row(i) << 0.5 * u(rng), -2.0 * u(rng), 1.5 * u(rng), 0.0;
-    a.row(i) /= p_ref;
-    b.row(i) /= h_ref;
-    c[i] = -1.0 / (2.0 * u(rng));
-  }
-  internal::NewtonSystem sys;
-  sys.n = n;
-  sys.dx = dx;
-  sys.p_ref = p_ref;
-  sys.h_ref = h_ref;
-  sys.row_scale = &c;
-  sys.load = 1e5;
-  sys.a = &a;
-  sys.b = &b;
-  sys.elastic = &k;
-  sys.cavitated.assign(n, 0);
-  for (int i = n - n / 5; i < n - 1; ++i) sys.cavitated[i] = 1;  // outlet rows
-  Eigen::VectorXd x(n - 1), y;
-  for (int i = 0; i < n - 1; ++i) x[i] = u(rng) - 1.0;
+  testing::RandomNewtonSystem rs(n, 7);
+  internal::NewtonSystem& sys = rs.sys;
+  const Eigen::VectorXd x = rs.RandomVector();
+  Eigen::VectorXd y;
   const Eigen::VectorXd jx = sys.Dense() * x;
   internal::FilmAugmentedPreconditioner pre;
   std::string why;

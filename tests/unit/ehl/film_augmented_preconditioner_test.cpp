@@ -8,49 +8,13 @@
 
 #include <Eigen/LU>
 #include <cstdio>
-#include <random>
 #include <string>
 
 #include "ehl/newton_system.hpp"
-#include "tehl/ehl/elastic_deflection.hpp"
+#include "support/random_newton_system.hpp"
 
 namespace tehl {
 namespace {
-
-// A Newton system with random Reynolds stencils of order-one scaled entries (as the solver's
-// row weights make them) and the real elastic kernel; the last fifth of the rows cavitated.
-struct RandomSystem {
-  explicit RandomSystem(int n)
-      : kernel(n, 1e-6, 226.4e9, FftPlanEffort::kEstimate), a(n, 4), b(n, 4), c(n) {
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<double> u(0.5, 1.5);
-    const double p_ref = 1e9, h_ref = 1e-7;  // [Pa], [m]
-    for (int i = 0; i < n; ++i) {
-      a.row(i) << 0.1 * u(rng), -1.0 * u(rng), 2.0 * u(rng), -1.0 * u(rng);
-      b.row(i) << 0.5 * u(rng), -2.0 * u(rng), 1.5 * u(rng), 0.0;
-      a.row(i) /= p_ref;
-      b.row(i) /= h_ref;
-      c[i] = -1.0 / (2.0 * u(rng));
-    }
-    sys.n = n;
-    sys.dx = 1e-6;
-    sys.p_ref = p_ref;
-    sys.h_ref = h_ref;
-    sys.row_scale = &c;
-    sys.load = 1e5;
-    sys.a = &a;
-    sys.b = &b;
-    sys.elastic = &kernel;
-    sys.cavitated.assign(n, 0);
-    for (int i = n - n / 5; i < n - 1; ++i) sys.cavitated[i] = 1;
-    rhs.resize(n - 1);
-    for (int i = 0; i < n - 1; ++i) rhs[i] = u(rng) - 1.0;
-  }
-  ElasticDeflection kernel;
-  Eigen::Matrix<double, Eigen::Dynamic, 4> a, b;
-  Eigen::VectorXd c, rhs;
-  internal::NewtonSystem sys;
-};
 
 // Backward error of the full-band solve: ||J y - r|| / (||J|| ||y||) with y = M^{-1} r. A
 // backward-stable LU solve leaves O(eps) times a modest growth factor; the elimination of
@@ -62,15 +26,16 @@ struct RandomSystem {
 // Eigen's dense LU of J is bounded by cond(J) (3.6e4 at n = 300, 4.9e4 at n = 513, by SVD;
 // tests/verification/ehl_linear_solvers_test.cpp) times that: 1e-12 * 5e4 < 1e-7.
 void ExpectDirectSolveOfJ(int n) {
-  RandomSystem rs(n);
+  testing::RandomNewtonSystem rs(n, 11);
+  const Eigen::VectorXd rhs = rs.RandomVector();
   const Eigen::MatrixXd j = rs.sys.Dense();
   internal::FilmAugmentedPreconditioner pre;
   std::string why;
   ASSERT_TRUE(pre.Factorize(rs.sys, n, &why)) << why;
   Eigen::VectorXd y;
-  pre.Solve(rs.rhs, &y);
-  const double backward = (j * y - rs.rhs).norm() / (j.norm() * y.norm());
-  const Eigen::VectorXd y_lu = j.partialPivLu().solve(rs.rhs);
+  pre.Solve(rhs, &y);
+  const double backward = (j * y - rhs).norm() / (j.norm() * y.norm());
+  const Eigen::VectorXd y_lu = j.partialPivLu().solve(rhs);
   const double forward = (y - y_lu).norm() / y_lu.norm();
   std::printf("n = %d: backward error %.3g, forward error vs dense LU %.3g\n", n, backward,
               forward);
@@ -78,15 +43,15 @@ void ExpectDirectSolveOfJ(int n) {
   EXPECT_LE(forward, 1e-7);
   // The same factorization solves again with the same result (buffers reused, no state
   // carried between solves), and the input may alias the output.
-  Eigen::VectorXd again = rs.rhs;
+  Eigen::VectorXd again = rhs;
   pre.Solve(again, &again);
   EXPECT_EQ((again - y).lpNorm<Eigen::Infinity>(), 0.0);
   // A second factorization with another cavitated set (same pattern) solves that system.
   rs.sys.cavitated[n / 2] = 1;
   ASSERT_TRUE(pre.Factorize(rs.sys, n, &why)) << why;
-  pre.Solve(rs.rhs, &y);
+  pre.Solve(rhs, &y);
   const Eigen::MatrixXd j2 = rs.sys.Dense();
-  EXPECT_LE((j2 * y - rs.rhs).norm() / (j2.norm() * y.norm()), 1e-12);
+  EXPECT_LE((j2 * y - rhs).norm() / (j2.norm() * y.norm()), 1e-12);
 }
 
 TEST(FilmAugmentedPreconditioner, FullBandSolveIsADirectSolveOfTheJacobian) {
