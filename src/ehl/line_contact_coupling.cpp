@@ -306,8 +306,10 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
   sum.continuation_stages = stages;
   sum.coupling_iterations = coupling;
   sum.temperature_backoffs = backoffs;
-  sum.temperature_change_k = change_t;
-  sum.energy_balance_error = balance;
+  sum.temperature_change_k = std::isfinite(change_t) ? change_t : -1.0;
+  // A failed energy solve can leave a non-finite temperature and with it a non-finite
+  // balance: reported as not computed (-1), never as NaN.
+  sum.energy_balance_error = std::isfinite(balance) ? balance : -1.0;
   sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
   return sum;
 }

@@ -150,7 +150,8 @@ class LineContactSolver {
     int substeps = 1;               // time substeps a transient Step needed [-]
     std::vector<IterationRecord> history;
     // Thermal runs: pressure/energy coupling iterations, the last temperature change and the
-    // energy balance error of the film (EnergyBalance::RelativeError) [-].
+    // energy balance error of the film (EnergyBalance::RelativeError) [-]; -1 where not
+    // computed (also after an energy solve that gave a non-finite temperature).
     int coupling_iterations = 0;    // [-]
     double temperature_change_k = -1;  // [K]
     double energy_balance_error = -1;  // [-]
