@@ -18,12 +18,13 @@
 // Discretization (finite volumes on the mapped grid x, xi = z/h, xi_j = j/(nz-1), j = 0 at
 // surface 1): vertex-centred cells, half cells at both surfaces and both ends; x-face mass
 // fluxes rho u h dxi with the temperature upwinded by the sign of each face flux (reverse flow
-// handled as it comes); cross-film mass fluxes from per-cell continuity (the column's total
-// mismatch, the discrete Reynolds residual of the given field, is spread over the column in
-// proportion to cell volume and reported as Summary::mass_defect); conduction across the film
+// handled as it comes), corrected from the inlet face on by a uniform velocity across the
+// film so that every column conserves mass (the given profile need not: its largest correction
+// relative to the mass flow is reported as Summary::mass_defect); cross-film mass fluxes from
+// per-cell continuity; conduction across the film
 // central; heating and compression as cell sources; implicit Euler (BDF1) in time. The heat
 // flux into each solid is the residual of the surface half cell's balance, so the energy
-// balance closes to round-off plus the mass defect. The surface temperatures are unknowns of
+// balance closes to round-off. The surface temperatures are unknowns of
 // the same sparse system (dense lower-triangular coupling by the moving-heat-source weights),
 // solved by KLU, whose block-triangular ordering reduces that coupling to forward substitution
 // wherever no fluid flows against x. The temperature dependence of rho, d rho/dT and of the
@@ -131,7 +132,7 @@ class FilmEnergySolver {
     int iterations = 0;        // linear solves (Picard / chord steps) [-]
     int factorizations = 0;    // KLU numeric factorizations among them [-]
     double max_change_k = -1;  // max |T| change of the last iteration (0 for a linear problem) [K]
-    double mass_defect = 0;    // max over columns |column mass mismatch| / mass flow scale [-]
+    double mass_defect = 0;    // largest face-flux correction to continuity / mass flow [-]
     EnergyBalance balance;
     double wall_time_s = 0;  // [s]
     bool usable() const { return termination == Termination::kConverged; }

@@ -253,6 +253,13 @@ TEST(FilmEnergySolver, EnergyBalanceClosesWithinOnePercentWithAndWithoutReverseF
         b.into_solid2_w_m, b.RelativeError(), r.summary.mass_defect, r.summary.iterations,
         r.summary.wall_time_s * 1e3, r.t.MaxTemperature() - kT0);
     EXPECT_LT(b.RelativeError(), 0.01);
+    // The EHL-like field's velocity profile does not conserve mass cell by cell (its pressure
+    // is not a Reynolds solution on this grid: mass defect 1e-2 and 1e-1 of the mass flow).
+    // The solver corrects the face fluxes to discrete continuity, so the finite-volume
+    // balance then closes to round-off (docs/thermal.md, "Energy balance"); an uncorrected
+    // defect left 1.2-4.9 % in the steady discs of docs/validation.md section 6.
+    EXPECT_GT(r.summary.mass_defect, 1e-3);
+    EXPECT_LT(b.RelativeError(), 1e-10);
     EXPECT_GT(b.convected_out_w_m, 0);
     EXPECT_GT(b.into_solid1_w_m, 0);
     EXPECT_GT(b.into_solid2_w_m, 0);
