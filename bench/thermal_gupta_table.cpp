@@ -8,12 +8,15 @@
 // phi_T = [1 + 0.1 (1 + 14.8 SRR^0.83) L_T^0.64]^-1 (VALIDATION.md section 4) and whether the
 // ratio lies within +-15 % of phi_T. Nothing is tuned toward phi_T.
 //
-// Usage: tehl_thermal_gupta_table [nodes = 513] [film_nodes = 11]
+// Usage: tehl_thermal_gupta_table [nodes = 513] [film_nodes = 11] [eyring] [srr,...]
+//   eyring: the thermal films use the lubricant's Ree-Eyring law (effect non_newtonian; the
+//   isothermal reference stays Newtonian). srr,...: only these slide-to-roll ratios.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "tehl/lubricant/lubricant.hpp"
 #include "verification/thermal_disc_case.hpp"
@@ -33,15 +36,27 @@ constexpr double kSrrs[] = {0.0, 0.25, 0.5, 1.0};
 int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 513;
   const int nz = argc > 2 ? std::atoi(argv[2]) : 11;
+  const bool eyring = argc > 3 && std::string(argv[3]) == "eyring";
+  std::vector<double> srrs(std::begin(kSrrs), std::end(kSrrs));
+  if (argc > 4) {
+    srrs.clear();
+    for (const char* s = argv[4]; *s != '\0';) {
+      char* end = nullptr;
+      srrs.push_back(std::strtod(s, &end));
+      s = (*end == ',') ? end + 1 : end;
+      if (end == s && *end != '\0') break;
+    }
+  }
   const Lubricant oil = Lubricant::FromFile(tehl::testing::Sae40Path());
   LineContactSolver::Options o;
   o.film_nodes = nz;
   ThermalDisc disc;
   std::printf(
       "Steel discs R = %.0f mm, p_H = %.2f GPa (w = %.1f kN/m), %s, T0 = %.2f K, "
-      "beta = %.4f 1/K; %d nodes, %d across the film.\n\n",
+      "beta = %.4f 1/K; %d nodes, %d across the film; %s thermal films.\n\n",
       disc.radius_m * 1e3, disc.hertz_pa / 1e9, disc.load_n_per_m() / 1e3, oil.name().c_str(),
-      oil.reference_temperature_k(), tehl::testing::ViscosityTemperatureCoefficient(oil), n, nz);
+      oil.reference_temperature_k(), tehl::testing::ViscosityTemperatureCoefficient(oil), n, nz,
+      eyring ? "Ree-Eyring" : "Newtonian");
   std::printf(
       "| L_T | um [m/s] | SRR | h_c iso [um] | h_c thermal [um] | ratio | phi_T | "
       "ratio/phi_T - 1 | within 15 %% | T_max - T0 [K] | mu | balance error | "
@@ -55,10 +70,10 @@ int main(int argc, char** argv) {
     FilmState si;
     const auto isum = iso.SolveSteady(disc.Conditions(oil), &si);
     const double hc_iso = si.CentralFilm(iso.grid());
-    for (double srr : kSrrs) {
+    for (double srr : srrs) {
       disc.srr = srr;
       const auto t0 = std::chrono::steady_clock::now();
-      LineContactSolver th = tehl::testing::DiscSolver(disc, oil, n, true, o);
+      LineContactSolver th = tehl::testing::DiscSolver(disc, oil, n, true, o, {}, eyring);
       FilmState st;
       const auto c = disc.Conditions(oil);
       const auto sum = th.SolveSteady(c, &st);

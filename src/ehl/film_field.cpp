@@ -15,7 +15,6 @@
 namespace tehl::internal {
 namespace {
 
-constexpr double kEyringRelaxation = 0.5;
 constexpr int kHeatingCuts = 8;      // heating scalings tried per energy solve [-]
 
 }  // namespace
@@ -64,7 +63,7 @@ void FilmField::Begin(const ContactConditions& c, const FilmState& s) {
   }
   if (eyring_) {
     factor_.setOnes(n, nz_);
-    if (s.valid() && s.p_pa.size() == n) UpdateRheology(c, s);
+    if (s.valid() && s.p_pa.size() == n) UpdateRheology(c, s, kEyringRelaxation);
   }
 }
 
@@ -86,7 +85,9 @@ void FilmField::NodeViscosity(
     eta[j] = v[j].eta_pa_s * (eyring_ && !newtonian ? factor_(i, j) : 1.0);
 }
 
-double FilmField::UpdateRheology(const ContactConditions& c, const FilmState& s) {
+double FilmField::UpdateRheology(const ContactConditions& c,
+                                 const FilmState& s,
+                                 double relaxation) {
   if (!eyring_) return 0.0;
   const EyringParameters& e = *lub_.eyring();
   const int n = grid_.size();
@@ -112,7 +113,7 @@ double FilmField::UpdateRheology(const ContactConditions& c, const FilmState& s)
       // Under-relaxed in log f: the factor spans many decades across the contact.
       const double step = std::log(target / factor_(i, j));
       change = std::max(change, std::abs(step));
-      factor_(i, j) *= std::exp(kEyringRelaxation * step);
+      factor_(i, j) *= std::exp(relaxation * step);
     }
   }
   return change;

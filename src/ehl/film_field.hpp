@@ -47,9 +47,12 @@ class FilmField {
   // Eyring factor is recomputed from the state (1 for a state without pressure).
   void Begin(const ContactConditions& c, const FilmState& s);
 
-  // Recomputes the Eyring factor from a pressure solution; returns the largest change of
-  // log f [-] (0 when Newtonian).
-  double UpdateRheology(const ContactConditions& c, const FilmState& s);
+  // Recomputes the Eyring factor from a pressure solution, moving log f by `relaxation` of
+  // the way to its target (1 = the factor of this state exactly); returns the largest
+  // distance |log f_target - log f| before the move [-] (0 when Newtonian).
+  double UpdateRheology(const ContactConditions& c, const FilmState& s, double relaxation);
+  // The under-relaxation of the coupling iteration's Eyring update [-].
+  static constexpr double kEyringRelaxation = 0.5;
 
   struct EnergyUpdate {
     bool ok = false;

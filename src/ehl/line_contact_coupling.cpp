@@ -38,7 +38,10 @@ FilmFriction LineContactSolver::Impl::Friction(const ContactConditions& c, const
   FilmState s = st;
   Film(c, &s);
   if (field_) {
+    // The film's own Eyring factor (Begin alone would leave it half-way from 1, a shear
+    // stress near the geometric mean of the Newtonian and the Eyring one).
     field_->Begin(c, st);
+    field_->UpdateRheology(c, s, 1.0);
     return field_->Friction(c, s);
   }
   // Newtonian, isothermal: eta(p, T0) uniform across the film (two cross-film nodes).
@@ -227,7 +230,7 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
     if (p_last.size() == s->p_pa.size())
       change_p = (s->p_pa - p_last).cwiseAbs().maxCoeff() / std::max(s->MaxPressure(), 1.0);
     p_last = s->p_pa;
-    change_f = field_->UpdateRheology(c, *s);
+    change_f = field_->UpdateRheology(c, *s, internal::FilmField::kEyringRelaxation);
     change_t = 0.0;
     if (eff_.thermal) {
       // The energy solver checks its inputs and throws on a malformed flow field; inside a

@@ -74,16 +74,19 @@ inline double GuptaFactor(double l_t, double srr) {
   return 1.0 / (1.0 + 0.1 * (1.0 + 14.8 * std::pow(std::abs(srr), 0.83)) * std::pow(l_t, 0.64));
 }
 
-// A solver on the disc's grid (-4.5 b .. 1.5 b, DESIGN.md section 5), steady, Newtonian.
+// A solver on the disc's grid (-4.5 b .. 1.5 b, DESIGN.md section 5), steady, Newtonian unless
+// `eyring` (the lubricant's Ree-Eyring law, effect non_newtonian).
 inline LineContactSolver DiscSolver(const ThermalDisc& d,
                                     const Lubricant& oil,
                                     int n,
                                     bool thermal,
                                     const LineContactSolver::Options& o = {},
-                                    const ContactSolids& solids = ContactSolids{}) {
+                                    const ContactSolids& solids = ContactSolids{},
+                                    bool eyring = false) {
   FilmEffects e;
   e.transient = false;
   e.thermal = thermal;
+  e.non_newtonian = thermal && eyring;
   return LineContactSolver(UniformGrid::AroundHertz(d.half_width_m(), n), d.e_prime_pa, oil, e, o,
                            nullptr, nullptr, solids);
 }
