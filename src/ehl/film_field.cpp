@@ -93,6 +93,7 @@ double FilmField::UpdateRheology(const ContactConditions& c,
   const int n = grid_.size();
   std::vector<double> eta(nz_);
   double change = 0.0;
+  factor_in_ = factor_;
   for (int i = 0; i < n; ++i) {
     NodeViscosity(c, s, i, eta.data(), true);
     // The factor follows the sliding (Couette) shear stress: dp/dx = 0 in the root, so f
@@ -296,9 +297,21 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
   // way (history kept from Begin on).
   if (out.limited) out.max_change_k = std::max(out.max_change_k, 10 * opt_.thermal_tolerance_k);
   if (out.max_change_k >= opt_.thermal_tolerance_k && !out.limited) {
-    t_.t_k = outer_.Mix(incoming, t_.t_k, 1.0)
-                 .cwiseMax(MinTemperature(c.temperature_k))
-                 .cwiseMin(c.temperature_k + kMaxRiseK);
+    const int n = grid_.size();
+    if (eyring_ && factor_in_.rows() == n && factor_in_.cols() == nz_) {
+      // (T, w log f) -> (T', w log f_target): one fixed point, one Anderson history (mixing
+      // T alone while f moves by its own relaxation stalls the coupling of sliding films).
+      const Eigen::Index m = incoming.size();
+      Eigen::VectorXd x(2 * m), g(2 * m);
+      x << incoming.reshaped(), kLogFactorWeightK * factor_in_.array().log().reshaped();
+      g << t_.t_k.reshaped(), kLogFactorWeightK * factor_.array().log().reshaped();
+      const Eigen::VectorXd mixed = outer_.Mix(x, g, 1.0);
+      t_.t_k = mixed.head(m).reshaped(n, nz_);
+      factor_ = (mixed.tail(m) / kLogFactorWeightK).array().exp().min(1.0).reshaped(n, nz_);
+    } else {
+      t_.t_k = outer_.Mix(incoming, t_.t_k, 1.0);
+    }
+    t_.t_k = t_.t_k.cwiseMax(MinTemperature(c.temperature_k)).cwiseMin(c.temperature_k + kMaxRiseK);
     t_.t1_k = t_.t_k.col(0);
     t_.t2_k = t_.t_k.col(nz_ - 1);
   }

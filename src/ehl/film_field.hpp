@@ -51,8 +51,12 @@ class FilmField {
   // the way to its target (1 = the factor of this state exactly); returns the largest
   // distance |log f_target - log f| before the move [-] (0 when Newtonian).
   double UpdateRheology(const ContactConditions& c, const FilmState& s, double relaxation);
-  // The under-relaxation of the coupling iteration's Eyring update [-].
+  // The under-relaxation of the coupling iteration's Eyring update without the energy
+  // equation [-]. With it the factor moves all the way (relaxation 1) and the temperature
+  // update's Anderson step mixes temperature and log f together.
   static constexpr double kEyringRelaxation = 0.5;
+  // Weight of log f against the temperature in that joint step [K].
+  static constexpr double kLogFactorWeightK = 10.0;
 
   struct EnergyUpdate {
     bool ok = false;
@@ -121,6 +125,9 @@ class FilmField {
   bool thermal_, eyring_;
   FilmTemperature t_;       // thermal only
   Eigen::MatrixXd factor_;  // Eyring only
+  // Thermal Eyring runs: the factor the last UpdateRheology started from; the coupling's
+  // Anderson step mixes (T, log f) together (UpdateTemperature).
+  Eigen::MatrixXd factor_in_;
   std::unique_ptr<FilmEnergySolver> energy_;
   AndersonMixer outer_{5};    // the coupling iteration, reset by Begin
   int inner_iterations_ = 1;  // energy solves per coupling iteration

@@ -230,7 +230,8 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
     if (p_last.size() == s->p_pa.size())
       change_p = (s->p_pa - p_last).cwiseAbs().maxCoeff() / std::max(s->MaxPressure(), 1.0);
     p_last = s->p_pa;
-    change_f = field_->UpdateRheology(c, *s, internal::FilmField::kEyringRelaxation);
+    change_f = field_->UpdateRheology(
+        c, *s, eff_.thermal ? 1.0 : internal::FilmField::kEyringRelaxation);
     change_t = 0.0;
     if (eff_.thermal) {
       // The energy solver checks its inputs and throws on a malformed flow field; inside a
