@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <filesystem>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -24,8 +25,12 @@ inline std::string ReadText(const std::string& path) {
 
 inline std::string TempDirFor(const std::string& name) {
   static int counter = 0;
-  return ::testing::TempDir() + "/tehl_cycle_" + std::to_string(getpid()) + "_" +
-         std::to_string(counter++) + "_" + name;
+  const std::string path = ::testing::TempDir() + "/tehl_cycle_" + std::to_string(getpid()) +
+                           "_" + std::to_string(counter++) + "_" + name;
+  // A process of an earlier run with the same pid may have left this path behind: a test
+  // must not see its files (a stale scene result made a resume test fail at once).
+  std::filesystem::remove_all(path);
+  return path;
 }
 
 // cases/<case_name>.toml with each `key = value` line of `replace` (by key name) replaced;
