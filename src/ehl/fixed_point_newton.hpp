@@ -28,6 +28,10 @@ struct FixedPointNewtonOptions {
   double krylov_tolerance = 1e-2;  // relative residual of each linear solve [-]
   int max_step_halvings = 12;      // line search [-]
   int max_map_evaluations = 250;   // budget of G calls over the whole solve [-]
+  // Stalled when this many Newton steps in a row each lower ||G(x) - x||_2 by less than
+  // the fraction stall_decrease [-].
+  int stall_steps = 2;
+  double stall_decrease = 1e-3;
   // The first step tried is at most this long in the max-norm (near a fold of the solution
   // curve G' has an eigenvalue close to 1 and the Newton step is far too long) [unit of x].
   double max_step = 50.0;

@@ -119,6 +119,35 @@ TEST(FixedPointNewton, ReportsAMapWithoutFixedPoint) {
   EXPECT_TRUE(x.allFinite());
 }
 
+// G(x) = x + 1 + exp(-x) has no fixed point, and |G(x) - x| = 1 + exp(-x) keeps falling
+// towards 1 as x grows. Newton on F = G - x from x = 0 (G' - I = -exp(-x), by a forward
+// difference with fd_step 1e-2): step 1 goes to x = 2.0 (|F| 2 -> 1.13), step 2 to x = 10.5
+// (|F| -> 1 + 2.7e-5, 12 % lower), step 3 is capped at max_step = 50 (x = 60.5, |F| lower by
+// 2.7e-5 relative), and step 4 changes |F| by less than rounding. Steps 3 and 4 are the
+// stall_steps = 2 steps below the 0.1 % decrease: the solve stops after 4 steps and says why.
+// Without the stall test it creeps on through rounding-level decreases.
+TEST(FixedPointNewton, StopsWhenStepsNoLongerLowerTheResidual) {
+  const FixedPointMap map = [](const Eigen::VectorXd& x, Eigen::VectorXd* g) {
+    *g = x.array() + 1.0 + (-x.array()).exp();
+    return true;
+  };
+  FixedPointNewtonOptions o;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(1);
+  const FixedPointNewtonResult r = SolveFixedPoint(map, o, &x);
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.newton_iterations, 2 + o.stall_steps);
+  EXPECT_NE(r.message.find("stalled"), std::string::npos) << r.message;
+  EXPECT_NEAR(r.residual, 1.0, 1e-12);
+  EXPECT_GT(x[0], 60.0);  // past the capped step 3 (step 4 moves by rounding noise)
+
+  o.stall_steps = 1000;  // the stall test off
+  x.setZero();
+  const FixedPointNewtonResult all = SolveFixedPoint(map, o, &x);
+  EXPECT_FALSE(all.converged);
+  EXPECT_GT(all.newton_iterations, 20) << all.message;
+  EXPECT_GT(all.map_evaluations, 5 * r.map_evaluations);
+}
+
 // A map that fails at the start is reported at once.
 TEST(FixedPointNewton, ReportsAMapThatFailsAtTheStart) {
   const FixedPointMap map = [](const Eigen::VectorXd&, Eigen::VectorXd*) { return false; };
