@@ -3,7 +3,7 @@
 set -euo pipefail
 PKGS=(
   build-essential cmake pkg-config
-  libeigen3-dev libsuitesparse-dev libfftw3-dev libhdf5-dev hdf5-tools
+  libeigen3-dev libsuitesparse-dev liblapack-dev libfftw3-dev libhdf5-dev hdf5-tools
   libtoml11-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev   # libFuzzer target and its sanitizers (tests/fuzz, scripts/ci_extra.sh)

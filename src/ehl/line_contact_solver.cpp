@@ -102,6 +102,8 @@ std::vector<std::string> LineContactSolver::Options::Validate() const {
   rule(gmres_max_iterations >= 1, "gmres_max_iterations", gmres_max_iterations, ">= 1");
   rule(reused_lu_max_gmres >= 1, "reused_lu_max_gmres", reused_lu_max_gmres, ">= 1");
   rule(preconditioner_band >= 0, "preconditioner_band", preconditioner_band, ">= 0");
+  rule(preconditioner_coarse_pressures >= 0, "preconditioner_coarse_pressures",
+       preconditioner_coarse_pressures, ">= 0");
   rule(max_continuation_stages >= 0, "max_continuation_stages", max_continuation_stages, ">= 0");
   rule(min_step_fraction > 0 && min_step_fraction <= 1, "min_step_fraction", min_step_fraction,
        "in (0, 1]");
@@ -178,6 +180,7 @@ LineContactSolver::Impl::Impl(const UniformGrid& grid,
     k.restart = opt.gmres_restart;
     k.max_iterations = opt.gmres_max_iterations;
     k.band = opt.preconditioner_band;
+    k.coarse_pressures = opt.preconditioner_coarse_pressures;
     linear_ = internal::MakeNewtonKrylovSolver(k);
   }
 }

@@ -1,11 +1,20 @@
 // Newton-Krylov linear solver: GMRES on J dz = rhs with J applied matrix-free (the elastic
-// part through the FFT), right-preconditioned by the UMFPACK factorization of the augmented
-// "differential deflection" system of film_augmented_preconditioner.hpp (film change as an
-// unknown, second-differenced elastic kernel on a hierarchy of strides, half-band
-// settings.band). The factorization is kept across Newton iterations and solves while GMRES
-// converges quickly with it. Measured cost and iteration counts: docs/performance.md.
+// part through the FFT), right-preconditioned by the augmented "differential deflection"
+// system (film change as an unknown, second-differenced elastic kernel of half-band
+// settings.band). Two preconditioners:
+//  - two-level (settings.coarse_pressures > 0, the default): the one-level augmented system as
+//    a bordered band LU (banded_film_preconditioner.hpp, LAPACK) after a Galerkin coarse-space
+//    correction of about coarse_pressures piecewise-linear pressures (coarse_correction.hpp):
+//      y = C x;  y += M^{-1} (x - J y).
+//    Linear cost and memory in n; falls back to the hierarchy below if a factorization fails.
+//  - hierarchy of strides (coarse_pressures = 0): the UMFPACK factorization of
+//    film_augmented_preconditioner.hpp, whose fill grows faster than n.
+// The factorization is kept across Newton iterations and solves while GMRES converges quickly
+// with it. Measured cost and iteration counts: docs/performance.md.
 #include <algorithm>
 
+#include "ehl/banded_film_preconditioner.hpp"
+#include "ehl/coarse_correction.hpp"
 #include "ehl/film_augmented_preconditioner.hpp"
 #include "ehl/gmres.hpp"
 #include "ehl/newton_system.hpp"
@@ -26,7 +35,22 @@ class NewtonKrylovSolver final : public NewtonLinearSolver {
     // that the Jacobian has drifted (a load step, a moving cavitation boundary) and the
     // augmented matrix is refactorized, GMRES continuing from where it stopped.
     auto apply = [&](const Eigen::VectorXd& x, Eigen::VectorXd* y) { sys.Apply(x, y); };
-    auto precondition = [&](const Eigen::VectorXd& x, Eigen::VectorXd* y) { pre_.Solve(x, y); };
+    auto precondition = [&](const Eigen::VectorXd& x, Eigen::VectorXd* y) {
+      if (!two_level_) {
+        pre_.Solve(x, y);
+        return;
+      }
+      x_ = x;  // x and y may alias
+      coarse_.Apply(x_, &coarse_y_);
+      sys.Apply(coarse_y_, &fine_rhs_);
+      fine_rhs_ = x_ - fine_rhs_;
+      banded_.Solve(fine_rhs_, y);
+      *y += coarse_y_;
+      // A cavitated row of J is e_i, so J^{-1} x has x_i there: exactly, so that a Newton step
+      // leaves cavitated pressures at exactly zero (the sum above leaves round-off, ~1e-27 Pa).
+      for (int i = 1; i + 1 < sys.n; ++i)
+        if (sys.cavitated[i]) (*y)[i - 1] = x_[i - 1];
+    };
     dz->setZero(rhs.size());
     last_iterations_ = 0;
     GmresResult g;
@@ -39,7 +63,7 @@ class NewtonKrylovSolver final : public NewtonLinearSolver {
     if (!g.converged) {
       factored_n_ = 0;
       if (!dz->allFinite()) dz->setZero();
-      if (!pre_.Factorize(sys, settings_.band, why)) return false;
+      if (!Factorize(sys, why)) return false;
       factored_n_ = sys.n;
       g = Gmres(apply, precondition, rhs, dz, settings_.restart, settings_.max_iterations,
                 Tolerance());
@@ -60,9 +84,22 @@ class NewtonKrylovSolver final : public NewtonLinearSolver {
 
  private:
   double Tolerance() const { return forcing_ > 0 ? forcing_ : settings_.relative_tolerance; }
+  bool Factorize(const NewtonSystem& sys, std::string* why) {
+    two_level_ = false;
+    if (settings_.coarse_pressures > 0) {
+      const int stride = std::max(2, (sys.n - 1) / (settings_.coarse_pressures + 1));
+      std::string banded_why;
+      two_level_ = coarse_.Build(sys, stride) && banded_.Factorize(sys, settings_.band, &banded_why);
+    }
+    return two_level_ || pre_.Factorize(sys, settings_.band, why);
+  }
   KrylovSettings settings_;
   double forcing_ = 0;  // inexact Newton tolerance of the next solve, 0 = settings_
-  FilmAugmentedPreconditioner pre_;
+  FilmAugmentedPreconditioner pre_;  // hierarchy of strides (UMFPACK)
+  BandedFilmPreconditioner banded_;  // two-level: fine band LU ...
+  CoarseCorrection coarse_;          // ... and the coarse space
+  bool two_level_ = false;           // the current factorization is the two-level one
+  Eigen::VectorXd x_, coarse_y_, fine_rhs_;
   int factored_n_ = 0;        // n of the current factorization, 0 = none
   int fresh_iterations_ = 0;  // GMRES iterations right after the last factorization
   int last_iterations_ = 0;

@@ -1,8 +1,8 @@
 // The linearized Newton system of the line-contact solver, in scaled unknowns
 // z = [P_1 .. P_{n-2}, H0] (P = p/p_ref, H0 = h0/h_ref), and the two linear solvers behind
 // one interface: dense LU (the reference) and Newton-Krylov (GMRES with FFT Jacobian-vector
-// products, preconditioned by a sparse LU of the Reynolds stencil plus a band of the
-// elastic matrix).
+// products, preconditioned by a band LU of the Reynolds stencil plus a band of the elastic
+// matrix and a coarse-space correction).
 //
 // Row of interior node i (index i-1), with a row weight c_i < 0 (the complementarity is
 // p >= 0, -r >= 0, p r = 0; c_i = -1/|dr_i/dP_i| makes both arguments of the min comparable):
@@ -63,6 +63,10 @@ struct KrylovSettings {
   int max_iterations = 400;
   int band = 24;
   double relative_tolerance = 1e-10;
+  // Newton-Krylov: > 0 = the two-level preconditioner with about this many coarse pressures
+  // (banded_film_preconditioner.hpp, coarse_correction.hpp); 0 = the hierarchy of strides
+  // (film_augmented_preconditioner.hpp).
+  int coarse_pressures = 128;
 };
 std::unique_ptr<NewtonLinearSolver> MakeNewtonKrylovSolver(const KrylovSettings& settings);
 // GMRES preconditioned by the dense LU of an earlier Jacobian, refactorized when GMRES needs

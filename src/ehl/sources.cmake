@@ -24,4 +24,6 @@ list(APPEND TEHL_SOURCES
   src/ehl/film_energy_system.cpp
   src/ehl/far_history.cpp
   src/ehl/film_augmented_preconditioner.cpp
+  src/ehl/coarse_correction.cpp
+  src/ehl/banded_film_preconditioner.cpp
 )

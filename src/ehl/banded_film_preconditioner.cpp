@@ -1,0 +1,154 @@
+#include "ehl/banded_film_preconditioner.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "ehl/newton_system.hpp"
+#include "tehl/ehl/elastic_deflection.hpp"
+
+extern "C" {
+// LAPACK (Fortran calling convention; the trailing length of the character argument is the
+// gfortran ABI's hidden argument).
+void dgbtrf_(const int* m, const int* n, const int* kl, const int* ku, double* ab,
+             const int* ldab, int* ipiv, int* info);
+void dgbtrs_(const char* trans, const int* n, const int* kl, const int* ku, const int* nrhs,
+             const double* ab, const int* ldab, const int* ipiv, double* b, const int* ldb,
+             int* info, std::size_t trans_len);
+}
+
+namespace tehl::internal {
+
+bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std::string* why) {
+  const int n = sys.n, m = n - 2;
+  band = std::max(band, 1);
+  n_ = n;
+  size_ = 2 * m;
+  kl_ = std::max(4, 2 * band);
+  ku_ = std::max(3, 2 * band);
+  ldab_ = 2 * kl_ + ku_ + 1;
+  ab_.assign(static_cast<std::size_t>(ldab_) * size_, 0.0);
+  ipiv_.resize(size_);
+  Eigen::MatrixXd bc = Eigen::MatrixXd::Zero(size_, 3);  // columns H_0, H_{n-1}, H0
+  auto add = [&](int row, int col, double v) {
+    ab_[static_cast<std::size_t>(col) * ldab_ + (kl_ + ku_ + row - col)] += v;
+  };
+  auto hcol = [](int k) { return 2 * (k - 1); };      // core column of H_k, k = 1 .. m
+  auto pcol = [](int k) { return 2 * (k - 1) + 1; };  // core column of P_k
+  // Film change H_k in row `row` with weight v: core column or border column.
+  auto add_h = [&](int row, int k, double v) {
+    if (k == 0)
+      bc(row, 0) += v;
+    else if (k == n - 1)
+      bc(row, 1) += v;
+    else
+      add(row, hcol(k), v);
+  };
+  // kc_q = (p_ref/h_ref) K_q and prefix sums pk[q + 1] = sum_{d <= q} kc_d.
+  const double ks = sys.p_ref / sys.h_ref;
+  std::vector<double> kc(n, 0.0), pk(n + 1, 0.0);
+  if (sys.elastic)
+    for (int q = 0; q < n; ++q) kc[q] = ks * sys.elastic->Coefficient(q);
+  for (int q = 0; q < n; ++q) pk[q + 1] = pk[q] + kc[q];
+  auto row_sum = [&](int c) {  // sum_{j=1..m} kc_|c-j|
+    const int lo = 1, hi = m;
+    if (hi < c) return pk[c - lo + 1] - pk[c - hi];
+    if (lo > c) return pk[hi - c + 1] - pk[lo - c];
+    return pk[c - lo + 1] + pk[hi - c + 1] - kc[0];
+  };
+  for (int i = 1; i <= m; ++i) {
+    const int row = 2 * (i - 1);
+    if (sys.cavitated[i]) {
+      add(row, pcol(i), 1.0);
+    } else {
+      const double rs = (*sys.row_scale)[i];
+      for (int q = 0; q < 4; ++q) {
+        const int k = i - 2 + q;
+        if (k < 0 || k >= n) continue;
+        if (k >= 1 && k <= m) add(row, pcol(k), rs * sys.p_ref * (*sys.a)(i, q));
+        add_h(row, k, rs * sys.h_ref * (*sys.b)(i, q));
+      }
+    }
+    // Film row of node i: a second difference of H against the truncated kernel.
+    const int frow = row + 1;
+    add_h(frow, i - 1, 1.0);
+    add_h(frow, i, -2.0);
+    add_h(frow, i + 1, 1.0);
+    const int lo = std::max(1, i - band), hi = std::min(m, i + band);
+    double in_band = 0.0;
+    for (int j = lo; j <= hi; ++j) {
+      const double dij = kc[std::abs(i - 1 - j)] - 2.0 * kc[std::abs(i - j)] + kc[std::abs(i + 1 - j)];
+      in_band += dij;
+      if (j != i) add(frow, pcol(j), -dij);
+    }
+    const double total = row_sum(i - 1) - 2.0 * row_sum(i) + row_sum(i + 1);
+    const double dii = kc[1] - 2.0 * kc[0] + kc[1];
+    add(frow, pcol(i), -(dii + (total - in_band)));
+  }
+  // Border rows on the P columns: the exact film rows of both ends and the load row.
+  border_.resize(3, m);
+  const double wload = sys.dx * sys.p_ref / sys.load;
+  for (int j = 1; j <= m; ++j) {
+    border_(0, j - 1) = -kc[j];
+    border_(1, j - 1) = -kc[n - 1 - j];
+    border_(2, j - 1) = wload;
+  }
+  Eigen::Matrix3d d;
+  d << 1, 0, -1, 0, 1, -1, 0, 0, 0;
+  int info = 0;
+  dgbtrf_(&size_, &size_, &kl_, &ku_, ab_.data(), &ldab_, ipiv_.data(), &info);
+  if (info != 0) {
+    *why = "newton_krylov: banded LU of the preconditioner failed (dgbtrf info " +
+           std::to_string(info) + ")";
+    return false;
+  }
+  y_ = bc;
+  const int nrhs = 3;
+  dgbtrs_("N", &size_, &kl_, &ku_, &nrhs, ab_.data(), &ldab_, ipiv_.data(), y_.data(), &size_,
+          &info, 1);
+  // S = D - B_r C^{-1} B_c, with B_r acting on the P rows of Y.
+  Eigen::Matrix3d s = d;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      double acc = 0;
+      for (int j = 1; j <= m; ++j) acc += border_(r, j - 1) * y_(pcol(j), c);
+      s(r, c) -= acc;
+    }
+  Eigen::FullPivLU<Eigen::Matrix3d> lu(s);
+  if (info != 0 || !lu.isInvertible()) {
+    *why = "newton_krylov: the border of the banded preconditioner is singular";
+    return false;
+  }
+  schur_inv_ = lu.inverse();
+  work_.resize(size_);
+  return true;
+}
+
+void BandedFilmPreconditioner::Solve(const Eigen::VectorXd& x, Eigen::VectorXd* y) const {
+  const int m = n_ - 2;
+  // Right-hand side: the Reynolds rows carry x, the film rows 0; the load row x[m].
+  double* u = work_.data();
+  for (int k = 0; k < m; ++k) {
+    u[2 * k] = x[k];
+    u[2 * k + 1] = 0.0;
+  }
+  const int nrhs = 1;
+  int info = 0;
+  dgbtrs_("N", &size_, &kl_, &ku_, &nrhs, ab_.data(), &ldab_, ipiv_.data(), u, &size_, &info,
+          1);
+  Eigen::Vector3d g(0.0, 0.0, x[m]);
+  for (int r = 0; r < 3; ++r) {
+    double acc = 0;
+    for (int k = 0; k < m; ++k) acc += border_(r, k) * u[2 * k + 1];
+    g[r] -= acc;
+  }
+  const Eigen::Vector3d s = schur_inv_ * g;
+  y->resize(m + 1);
+  for (int k = 0; k < m; ++k)
+    (*y)[k] = u[2 * k + 1] - (y_(2 * k + 1, 0) * s[0] + y_(2 * k + 1, 1) * s[1] +
+                              y_(2 * k + 1, 2) * s[2]);
+  (*y)[m] = s[2];
+}
+
+}  // namespace tehl::internal

@@ -1,0 +1,43 @@
+// One-level augmented preconditioner of the Newton system (newton_system.hpp), factorized as a
+// bordered band matrix. The same "differential deflection" rows as
+// film_augmented_preconditioner.hpp with a single level of stride 1:
+//   Reynolds row i:  cavitated: P_i;  otherwise c_i (p_ref sum_k A_ik P_k + h_ref sum_k B_ik H_k)
+//   film row k = 1 .. n-2:  H_{k-1} - 2 H_k + H_{k+1} - (p_ref/h_ref) sum_{|k-j| <= band} D_kj P_j
+//                           (D the second-differenced kernel, the dropped tail's row sum on the
+//                           diagonal)
+//   border rows:  H_0 - H0 - (p_ref/h_ref) sum_j K_j P_j,  H_{n-1} - H0 - ...,  the load row.
+// In the node order (H_k, P_k), k = 1 .. n-2, the core is a band matrix (half-bands
+// max(4, 2 band) below and max(3, 2 band) above) bordered by three rows (the two exact film
+// rows, the load row) and three columns (H_0, H_{n-1}, H0). It is factorized by LAPACK's
+// banded LU with partial pivoting (dgbtrf) and the 3 x 3 Schur complement of the border:
+// O(n band^2) to factorize and O(n band) to solve, with no fill beyond the band. What the
+// truncated kernel misses is smooth and long-ranged: coarse_correction.hpp supplies it.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace tehl::internal {
+
+struct NewtonSystem;
+
+class BandedFilmPreconditioner {
+ public:
+  // Assembles and factorizes the bordered band matrix of `system` with kernel half-band
+  // `band` >= 1. False (with a reason) if the band LU or the Schur complement is singular.
+  bool Factorize(const NewtonSystem& system, int band, std::string* why);
+  // y ~ J^{-1} x for vectors of size n - 1 (the Newton unknowns).
+  void Solve(const Eigen::VectorXd& x, Eigen::VectorXd* y) const;
+
+ private:
+  int n_ = 0, size_ = 0, kl_ = 0, ku_ = 0, ldab_ = 0;  // core size 2 (n - 2)
+  std::vector<double> ab_;     // LAPACK band storage of the core, then its LU factors
+  std::vector<int> ipiv_;
+  Eigen::MatrixXd y_;          // C^{-1} B_c (size_ x 3)
+  Eigen::MatrixXd border_;     // B_r restricted to the P columns (3 x (n - 2))
+  Eigen::Matrix3d schur_inv_;  // (D - B_r C^{-1} B_c)^{-1}
+  mutable Eigen::VectorXd work_;
+};
+
+}  // namespace tehl::internal

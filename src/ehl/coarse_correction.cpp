@@ -1,0 +1,130 @@
+#include "ehl/coarse_correction.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "ehl/newton_system.hpp"
+#include "tehl/ehl/elastic_deflection.hpp"
+
+namespace tehl::internal {
+
+double CoarseCorrection::HatWeight(int node, int c) const {
+  const int centre = (c + 1) * stride_;
+  const double d = std::abs(node - centre);
+  return d < stride_ ? 1.0 - d / stride_ : 0.0;
+}
+
+bool CoarseCorrection::Build(const NewtonSystem& sys, int stride) {
+  const int n = sys.n;
+  if (stride < 2) return false;
+  const int nc = (n - 1) / stride - 1;  // hats centred at G .. nc G, each inside the grid
+  if (nc < 2) return false;
+  n_ = n;
+  stride_ = stride;
+  nc_ = nc;
+  const int g = stride;
+  // kh[d] = sum_t (1 - |t|/G) K_|d - t|: the deflection (per unit p_ref, scaled to H) a
+  // distance d from the centre of a unit hat.
+  std::vector<double> kh(n, 0.0);
+  if (sys.elastic) {
+    std::vector<double> k(n);
+    for (int q = 0; q < n; ++q) k[q] = sys.elastic->Coefficient(q);
+    for (int d = 0; d < n; ++d) {
+      double s = 0;
+      for (int t = -(g - 1); t <= g - 1; ++t) {
+        const int q = std::abs(d - t);
+        if (q < n) s += (1.0 - std::abs(t) / static_cast<double>(g)) * k[q];
+      }
+      kh[d] = s;
+    }
+  }
+  // Test functions W: hat l at row i (row index i - 1), both hats that cover node i.
+  e_.setZero(nc + 1, nc + 1);
+  // Elastic part, E_BK(l, c) = sum_i hat_l(i) sum_q bb(i, q) kh(|i - 2 + q - N_c|) with
+  // bb = rs p_ref b (zero on cavitated rows): with T_l(k) = sum over (i, q) with i - 2 + q = k of
+  // hat_l(i) bb(i, q) (k in N_l - G - 1 .. N_l + G), E_BK(l, c) = sum_k T_l(k) kh(|k - N_c|).
+  const int len = 2 * g + 2;
+  std::vector<double> tl(len);
+  for (int l = 0; l < nc; ++l) {
+    const int nl = (l + 1) * g, k0 = nl - g - 1;
+    std::fill(tl.begin(), tl.end(), 0.0);
+    for (int i = nl - g + 1; i <= nl + g - 1; ++i) {
+      if (sys.cavitated[i]) continue;
+      const double w = HatWeight(i, l) * (*sys.row_scale)[i] * sys.p_ref;
+      for (int q = 0; q < 4; ++q) {
+        const int k = i - 2 + q;
+        if (k >= 0 && k < n) tl[k - k0] += w * (*sys.b)(i, q);
+      }
+    }
+    if (sys.elastic)
+      for (int c = 0; c < nc; ++c) {
+        const int off = k0 - (c + 1) * g;  // k - N_c at t = 0
+        double acc = 0;
+        for (int t = 0; t < len; ++t) acc += tl[t] * kh[std::abs(off + t)];
+        e_(l, c) = acc;
+      }
+    // Local part: the Reynolds stencil (nodes i-2 .. i+1, or the identity of a cavitated row)
+    // on the hats it reaches from the support of hat l: l-2 .. l+1.
+    for (int c = std::max(l - 2, 0); c <= std::min(l + 1, nc - 1); ++c) {
+      double acc = 0;
+      for (int i = nl - g + 1; i <= nl + g - 1; ++i) {
+        double v;
+        if (sys.cavitated[i]) {
+          v = HatWeight(i, c);
+        } else {
+          double s = 0;
+          for (int q = 0; q < 4; ++q) s += (*sys.a)(i, q) * HatWeight(i - 2 + q, c);
+          v = (*sys.row_scale)[i] * sys.p_ref * s;
+        }
+        acc += HatWeight(i, l) * v;
+      }
+      e_(l, c) += acc;
+    }
+    // Column of H0 (h changes by h_ref everywhere).
+    double acc = 0;
+    for (int i = nl - g + 1; i <= nl + g - 1; ++i) {
+      if (sys.cavitated[i]) continue;
+      double s = 0;
+      for (int q = 0; q < 4; ++q)
+        if (i - 2 + q >= 0 && i - 2 + q < n) s += (*sys.b)(i, q);
+      acc += HatWeight(i, l) * (*sys.row_scale)[i] * sys.h_ref * s;
+    }
+    e_(l, nc) = acc;
+  }
+  // Load row: dx times the sum of a hat (G); it does not depend on H0.
+  for (int c = 0; c < nc; ++c) e_(nc, c) = sys.dx * sys.p_ref * g / sys.load;
+  lu_.compute(e_);
+  if (!(lu_.rcond() > 1e-14)) return false;
+  rc_.resize(nc + 1);
+  return true;
+}
+
+void CoarseCorrection::Apply(const Eigen::VectorXd& x, Eigen::VectorXd* y) const {
+  const int m = n_ - 2, g = stride_;
+  rc_.setZero();
+  for (int c = 0; c < nc_; ++c) {
+    const int centre = (c + 1) * g;
+    double s = x[centre - 1];
+    for (int t = 1; t < g; ++t) {
+      const double w = 1.0 - static_cast<double>(t) / g;
+      s += w * (x[centre - t - 1] + x[centre + t - 1]);
+    }
+    rc_[c] = s;
+  }
+  rc_[nc_] = x[m];
+  const Eigen::VectorXd sc = lu_.solve(rc_);
+  y->setZero(m + 1);
+  for (int c = 0; c < nc_; ++c) {
+    const int centre = (c + 1) * g;
+    (*y)[centre - 1] += sc[c];
+    for (int t = 1; t < g; ++t) {
+      const double w = (1.0 - static_cast<double>(t) / g) * sc[c];
+      (*y)[centre - t - 1] += w;
+      (*y)[centre + t - 1] += w;
+    }
+  }
+  (*y)[m] = sc[nc_];
+}
+
+}  // namespace tehl::internal

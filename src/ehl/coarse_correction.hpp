@@ -1,0 +1,39 @@
+// Coarse-space (two-level) correction of the Newton system (newton_system.hpp): a Galerkin
+// projection of the full Jacobian onto piecewise-linear pressures on a coarse grid of stride
+// G (nodes G, 2G, ... of the fine grid) plus the rigid approach H0, with the load row kept as
+// its own coarse row:
+//   Z = [hats | e_H0],  W = [hats | e_load],  E = W^T J Z,  C x = Z E^{-1} W^T x.
+// Used with a cheap fine preconditioner M (the one-level band LU of
+// banded_film_preconditioner.hpp, whose truncated kernel misses only the smooth, long-range
+// part of the elastic coupling) as
+//   y = C x;  y += M^{-1} (x - J y)      (coarse first, then the fine solve).
+// J Z is formed without FFTs: the deflection of a hat of width 2G centred at node N is the
+// hat-smoothed kernel kh(|k - N|) shifted to N, so each column costs O(n) and E O(n n_c).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+namespace tehl::internal {
+
+struct NewtonSystem;
+
+class CoarseCorrection {
+ public:
+  // Builds and factorizes E for the system's current linearization; stride >= 2 fine cells
+  // per coarse cell. False if the grid is too small for two coarse pressures or E is singular.
+  bool Build(const NewtonSystem& system, int stride);
+  // y = Z E^{-1} W^T x (vectors of the Newton unknowns, size n - 1).
+  void Apply(const Eigen::VectorXd& x, Eigen::VectorXd* y) const;
+  int coarse_size() const { return static_cast<int>(e_.rows()); }  // nc + 1 [-]
+  const Eigen::MatrixXd& matrix() const { return e_; }  // E = W^T J Z
+
+ private:
+  int n_ = 0, stride_ = 0, nc_ = 0;  // fine nodes, G, coarse pressures
+  double HatWeight(int node, int c) const;  // hat c (centre (c+1) G) at a fine node
+  Eigen::MatrixXd e_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  mutable Eigen::VectorXd rc_;
+};
+
+}  // namespace tehl::internal
