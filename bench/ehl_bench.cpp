@@ -2,10 +2,11 @@
 // Moes point M = 20, L = 10 with the reference oil (VALIDATION.md section 3), per grid size and
 // linear solver, cold (no guess: grid sequencing inside SolveSteady) and warm (re-solve from
 // the converged state after the load grew by 1 %, what a mesh cycle mostly does); the one-off
-// cost of the elastic-deflection FFT plans; and one FFT convolution for the ratio
-// (one Newton iteration) / (one FFT convolution).
+// cost of the elastic-deflection FFT plans; one FFT convolution for the ratio
+// (one Newton iteration) / (one FFT convolution); and warm re-solves in a loop (BM_WarmNewton),
+// which time many Newton iterations and an FFT convolution in the same process.
 //   ./ehl_bench --benchmark_counters_tabular=true
-// Every solve is expensive (up to a minute for dense LU at n = 4097), so each benchmark runs
+// Every solve is expensive (up to a minute for dense LU at n = 4097), so each BM_Steady runs
 // exactly one iteration.
 //
 // Peak memory: before the solve the kernel's peak-RSS mark is reset to the current RSS by
@@ -15,6 +16,7 @@
 // is -1.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -156,6 +158,56 @@ void BM_Steady(benchmark::State& state) {
   }
 }
 
+// Warm re-solves in a loop (what a mesh cycle mostly does): the load alternates between w and
+// 1.01 w, each solve starting from the last film. Reports the wall time per Newton iteration
+// and its ratio to one FFT convolution of the same n timed in the same process just before
+// (`newton_per_fft`, the target <= 20), plus the GMRES iterations per Newton
+// iteration. Second argument: 2 = two-level (default), 4 = the UMFPACK hierarchy.
+void BM_WarmNewton(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const tehl::Lubricant oil = tehl::testing::ReferenceOil(kEta0, 0.68);
+  tehl::FilmEffects effects;
+  effects.transient = false;
+  tehl::LineContactSolver::Options opt;
+  opt.linear_solver = tehl::LinearSolverKind::kNewtonKrylov;
+  if (state.range(1) == 4) opt.preconditioner_coarse_pressures = 0;
+  opt.max_continuation_stages = 0;
+  const tehl::UniformGrid grid = Grid(n);
+  tehl::LineContactSolver solver(grid, kEPrime, oil, effects, opt);
+  tehl::ContactConditions c = MoesPoint();
+  const double w = c.load_n_per_m;
+  tehl::FilmState s;
+  solver.SolveSteady(c, &s);
+  // One FFT convolution, timed here so that the ratio comes from one run.
+  const tehl::ElasticDeflection k(n, grid.dx_m(), kEPrime, tehl::FftPlanEffort::kMeasure);
+  Eigen::VectorXd p = s.p_pa, v(n);
+  const int fft_reps = std::max(200, 2000000 / n);
+  auto t0 = Clock::now();
+  for (int r = 0; r < fft_reps; ++r) {
+    k.Apply(p.data(), v.data());
+    benchmark::DoNotOptimize(v.data());
+  }
+  const double fft_s = Seconds(t0) / fft_reps;
+  long newton = 0, gmres = 0, solves = 0, failed = 0;
+  double solve_s = 0;
+  for (auto _ : state) {
+    c.load_n_per_m = (solves % 2 == 0) ? 1.01 * w : w;
+    t0 = Clock::now();
+    const auto sum = solver.SolveSteady(c, &s);
+    solve_s += Seconds(t0);
+    newton += sum.total_iterations;
+    gmres += sum.krylov_iterations;
+    failed += !sum.usable();
+    ++solves;
+  }
+  state.counters["fft_us"] = 1e6 * fft_s;
+  state.counters["newton_per_solve"] = static_cast<double>(newton) / solves;
+  state.counters["gmres_per_newton"] = static_cast<double>(gmres) / std::max(1L, newton);
+  state.counters["s_per_newton"] = solve_s / std::max(1L, newton);
+  state.counters["newton_per_fft"] = solve_s / std::max(1L, newton) / fft_s;
+  state.counters["failed"] = static_cast<double>(failed);
+}
+
 void Sizes(benchmark::internal::Benchmark* b) {
   for (int n = 513; n <= 16385; n = 2 * n - 1) b->Arg(n);
 }
@@ -172,6 +224,9 @@ void Solves(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_DeflectionPlanning)->Apply(Sizes)->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FftConvolution)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Steady)->Apply(Solves)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_WarmNewton)
+    ->ArgsProduct({{513, 1025, 2049, 4097, 8193, 16385}, {2, 4}})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -9,13 +9,9 @@
 #include "tehl/ehl/elastic_deflection.hpp"
 
 extern "C" {
-// LAPACK (Fortran calling convention; the trailing length of the character argument is the
-// gfortran ABI's hidden argument).
+// LAPACK's banded LU with partial pivoting (Fortran calling convention).
 void dgbtrf_(const int* m, const int* n, const int* kl, const int* ku, double* ab,
              const int* ldab, int* ipiv, int* info);
-void dgbtrs_(const char* trans, const int* n, const int* kl, const int* ku, const int* nrhs,
-             const double* ab, const int* ldab, const int* ipiv, double* b, const int* ldb,
-             int* info, std::size_t trans_len);
 }
 
 namespace tehl::internal {
@@ -104,9 +100,7 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
     return false;
   }
   y_ = bc;
-  const int nrhs = 3;
-  dgbtrs_("N", &size_, &kl_, &ku_, &nrhs, ab_.data(), &ldab_, ipiv_.data(), y_.data(), &size_,
-          &info, 1);
+  for (int c = 0; c < 3; ++c) Substitute(y_.col(c).data());
   // S = D - B_r C^{-1} B_c, with B_r acting on the P rows of Y.
   Eigen::Matrix3d s = d;
   for (int r = 0; r < 3; ++r)
@@ -125,6 +119,39 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
   return true;
 }
 
+// The forward and back substitution of LAPACK's dgbtrs ("N", one right-hand side) on the
+// factors dgbtrf leaves in ab_: row interchanges and the unit lower multipliers column by
+// column, then the upper band of kl + ku superdiagonals. Written out because the reference
+// BLAS behind dgbtrs spends more on one call per column (dger, dswap, dtbsv) than on the
+// arithmetic of these short columns.
+void BandedFilmPreconditioner::Substitute(double* b) const {
+  const int n = size_, kv = kl_ + ku_;
+  const double* ab = ab_.data();
+  for (int j = 0; j + 1 < n; ++j) {
+    const int l = ipiv_[j] - 1;
+    double bj = b[l];
+    if (l != j) {
+      b[l] = b[j];
+      b[j] = bj;
+    }
+    if (bj == 0.0) continue;
+    const int lm = std::min(kl_, n - 1 - j);
+    const double* col = ab + static_cast<std::size_t>(j) * ldab_ + kv + 1;
+    double* bt = b + j + 1;
+    for (int i = 0; i < lm; ++i) bt[i] -= col[i] * bj;
+  }
+  for (int j = n - 1; j >= 0; --j) {
+    if (b[j] == 0.0) continue;
+    const double* col = ab + static_cast<std::size_t>(j) * ldab_ + kv;  // diagonal of column j
+    const double bj = b[j] / col[0];
+    b[j] = bj;
+    const int i0 = std::max(0, j - kv);
+    const double* up = col - (j - i0);  // U(i0, j)
+    double* bi = b + i0;
+    for (int i = 0, len = j - i0; i < len; ++i) bi[i] -= up[i] * bj;
+  }
+}
+
 void BandedFilmPreconditioner::Solve(const Eigen::VectorXd& x, Eigen::VectorXd* y) const {
   const int m = n_ - 2;
   // Right-hand side: the Reynolds rows carry x, the film rows 0; the load row x[m].
@@ -133,10 +160,7 @@ void BandedFilmPreconditioner::Solve(const Eigen::VectorXd& x, Eigen::VectorXd* 
     u[2 * k] = x[k];
     u[2 * k + 1] = 0.0;
   }
-  const int nrhs = 1;
-  int info = 0;
-  dgbtrs_("N", &size_, &kl_, &ku_, &nrhs, ab_.data(), &ldab_, ipiv_.data(), u, &size_, &info,
-          1);
+  Substitute(u);
   Eigen::Vector3d g(0.0, 0.0, x[m]);
   for (int r = 0; r < 3; ++r) {
     double acc = 0;

@@ -31,6 +31,7 @@ class BandedFilmPreconditioner {
   void Solve(const Eigen::VectorXd& x, Eigen::VectorXd* y) const;
 
  private:
+  void Substitute(double* b) const;  // b <- (core)^{-1} b with the LU factors in ab_
   int n_ = 0, size_ = 0, kl_ = 0, ku_ = 0, ldab_ = 0;  // core size 2 (n - 2)
   std::vector<double> ab_;     // LAPACK band storage of the core, then its LU factors
   std::vector<int> ipiv_;
