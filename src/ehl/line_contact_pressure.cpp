@@ -325,10 +325,12 @@ FilmState LineContactSolver::Impl::SequencedGuess(const ContactConditions& c,
     Options o = opt_;
     o.linear_solver = LinearSolverKind::kAuto;
     // A coarse grid is solved once per cold solve, from scratch: the reused dense LU pays off
-    // only over many warm solves (a mesh cycle). Measured (M = 20, L = 10, median of 3): the
-    // 513-node level by Newton-Krylov instead of the dense LU takes a 1025-node cold solve
-    // from 58 to 39 ms.
-    o.dense_max_nodes = std::min(o.dense_max_nodes, 257);
+    // only over many warm solves (a mesh cycle). Measured (M = 20, L = 10, medians of 5): the
+    // 513-node level by Newton-Krylov instead of the dense LU took a 1025-node cold solve from
+    // 58 to 39 ms (UMFPACK preconditioner); with the two-level preconditioner the 257-node
+    // level as well, 513 ... 4097-node cold solves 10.8 -> 8.0, 18.1 -> 16.3, 35.8 -> 33.0,
+    // 69 -> 67 ms. Only the bottom level (129 nodes) keeps the dense LU.
+    o.dense_max_nodes = std::min(o.dense_max_nodes, 129);
     // The coarse guess is isothermal and Newtonian: the fine grid couples the fields.
     FilmEffects coarse_effects = eff_;
     coarse_effects.thermal = false;
