@@ -94,12 +94,14 @@ void BM_FftConvolution(benchmark::State& state) {
   }
 }
 
-// Second argument: 0 = auto, 1 = dense LU, 2 = Newton-Krylov, 3 = reused dense LU.
+// Second argument: 0 = auto, 1 = dense LU, 2 = Newton-Krylov, 3 = reused dense LU,
+// 4 = Newton-Krylov with the UMFPACK hierarchy (SolverOptions).
 tehl::LinearSolverKind Kind(int64_t code) {
   switch (code) {
     case 1:
       return tehl::LinearSolverKind::kDense;
     case 2:
+    case 4:
       return tehl::LinearSolverKind::kNewtonKrylov;
     case 3:
       return tehl::LinearSolverKind::kReusedLu;
@@ -108,18 +110,30 @@ tehl::LinearSolverKind Kind(int64_t code) {
   }
 }
 
+// Solver options for the second benchmark argument (4 = Newton-Krylov with the UMFPACK
+// hierarchy instead of the two-level preconditioner).
+tehl::LineContactSolver::Options SolverOptions(int64_t code) {
+  tehl::LineContactSolver::Options opt;
+  opt.linear_solver = Kind(code);
+  if (code == 4) opt.preconditioner_coarse_pressures = 0;
+  // A failing iterative solve is reported by the counters instead of spending minutes in
+  // load continuation.
+  if (opt.linear_solver != tehl::LinearSolverKind::kDense) opt.max_continuation_stages = 0;
+  return opt;
+}
+
+tehl::FilmEffects SteadyEffects() {
+  tehl::FilmEffects effects;
+  effects.transient = false;
+  return effects;
+}
+
 // Cold solve then warm re-solve; the benchmark's own time is their sum, the counters split it.
 void BM_Steady(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const tehl::Lubricant oil = tehl::testing::ReferenceOil(kEta0, 0.68);
-  tehl::FilmEffects effects;
-  effects.transient = false;
-  tehl::LineContactSolver::Options opt;
-  opt.linear_solver = Kind(state.range(1));
-  if (state.range(1) == 4) opt.preconditioner_coarse_pressures = 0;
-  // A failing iterative solve is reported by the counters instead of spending minutes in
-  // load continuation.
-  if (opt.linear_solver != tehl::LinearSolverKind::kDense) opt.max_continuation_stages = 0;
+  const tehl::FilmEffects effects = SteadyEffects();
+  const tehl::LineContactSolver::Options opt = SolverOptions(state.range(1));
   const tehl::UniformGrid grid = Grid(n);
   const tehl::ContactConditions c = MoesPoint();
   {
@@ -161,17 +175,13 @@ void BM_Steady(benchmark::State& state) {
 // Warm re-solves in a loop (what a mesh cycle mostly does): the load alternates between w and
 // 1.01 w, each solve starting from the last film. Reports the wall time per Newton iteration
 // and its ratio to one FFT convolution of the same n timed in the same process just before
-// (`newton_per_fft`, the target <= 20), plus the GMRES iterations per Newton
-// iteration. Second argument: 2 = two-level (default), 4 = the UMFPACK hierarchy.
+// (`newton_per_fft`; docs/performance.md gives the target, <= 20), plus the GMRES iterations
+// per Newton iteration. Second argument: 2 = two-level (default), 4 = the UMFPACK hierarchy.
 void BM_WarmNewton(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const tehl::Lubricant oil = tehl::testing::ReferenceOil(kEta0, 0.68);
-  tehl::FilmEffects effects;
-  effects.transient = false;
-  tehl::LineContactSolver::Options opt;
-  opt.linear_solver = tehl::LinearSolverKind::kNewtonKrylov;
-  if (state.range(1) == 4) opt.preconditioner_coarse_pressures = 0;
-  opt.max_continuation_stages = 0;
+  const tehl::FilmEffects effects = SteadyEffects();
+  const tehl::LineContactSolver::Options opt = SolverOptions(state.range(1));
   const tehl::UniformGrid grid = Grid(n);
   tehl::LineContactSolver solver(grid, kEPrime, oil, effects, opt);
   tehl::ContactConditions c = MoesPoint();
