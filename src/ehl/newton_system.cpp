@@ -8,29 +8,37 @@ namespace tehl::internal {
 
 void NewtonSystem::Apply(const Eigen::VectorXd& x, Eigen::VectorXd* y) const {
   const int m = n - 2;
-  Eigen::VectorXd pv = Eigen::VectorXd::Zero(n);
-  pv.segment(1, m) = p_ref * x.head(m);
-  Eigen::VectorXd hv = Eigen::VectorXd::Constant(n, h_ref * x[m]);
+  // Scratch vectors kept between calls: GMRES applies J once or twice per iteration.
+  pv_.resize(n);
+  hv_.resize(n);
+  pv_[0] = 0.0;
+  pv_[n - 1] = 0.0;
+  pv_.segment(1, m) = p_ref * x.head(m);
   if (elastic) {
-    Eigen::VectorXd kv(n);
-    elastic->Apply(pv.data(), kv.data());
-    hv += kv;
+    elastic->Apply(pv_.data(), hv_.data());
+    hv_.array() += h_ref * x[m];
+  } else {
+    hv_.setConstant(h_ref * x[m]);
   }
   y->resize(m + 1);
+  const double* pv = pv_.data();
+  const double* hv = hv_.data();
+  const double* ad = a->data();
+  const double* bd = b->data();
+  const Eigen::Index lda = a->rows(), ldb = b->rows();  // column strides (n x 4, column-major)
   for (int i = 1; i <= m; ++i) {
     if (cavitated[i]) {
       (*y)[i - 1] = x[i - 1];
       continue;
     }
     double s = 0.0;
-    for (int c = 0; c < 4; ++c) {
+    for (int c = (i >= 2 ? 0 : 2 - i); c < 4; ++c) {  // node k = i - 2 + c >= 0 (i + 1 <= n - 1)
       const int k = i - 2 + c;
-      if (k < 0 || k >= n) continue;
-      s += (*a)(i, c) * pv[k] + (*b)(i, c) * hv[k];
+      s += ad[i + c * lda] * pv[k] + bd[i + c * ldb] * hv[k];
     }
     (*y)[i - 1] = (*row_scale)[i] * s;
   }
-  (*y)[m] = dx * pv.sum() / load;
+  (*y)[m] = dx * pv_.sum() / load;
 }
 
 Eigen::MatrixXd NewtonSystem::Dense() const {

@@ -42,6 +42,9 @@ struct NewtonSystem {
   Eigen::MatrixXd Dense() const;
   // dr_i/dp_i including the elastic part (node i's own column of A + B K) [1/Pa scaled r].
   double Diagonal(int i) const;
+
+ private:
+  mutable Eigen::VectorXd pv_, hv_;  // Apply's scratch: pressure [Pa] and film change [m]
 };
 
 class NewtonLinearSolver {
