@@ -13,6 +13,7 @@
 #include <string>
 
 #include "tehl/scene/mesh_cycle_scene.hpp"
+#include "support/scratch_path.hpp"
 
 namespace tehl::testing {
 
@@ -24,13 +25,9 @@ inline std::string ReadText(const std::string& path) {
 }
 
 inline std::string TempDirFor(const std::string& name) {
-  static int counter = 0;
-  const std::string path = ::testing::TempDir() + "/tehl_cycle_" + std::to_string(getpid()) +
-                           "_" + std::to_string(counter++) + "_" + name;
-  // A process of an earlier run with the same pid may have left this path behind: a test
-  // must not see its files (a stale scene result made a resume test fail at once).
-  std::filesystem::remove_all(path);
-  return path;
+  // Emptied first: a process of an earlier run with the same pid may have left this path
+  // behind, and a test must not see its files (a stale scene result made a resume test fail).
+  return ScratchPath("tehl_cycle", name);
 }
 
 // cases/<case_name>.toml with each `key = value` line of `replace` (by key name) replaced;

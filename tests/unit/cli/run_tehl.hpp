@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include "support/scratch_path.hpp"
 
 namespace tehl::testing {
 
@@ -29,9 +30,7 @@ inline std::string ReadAll(const std::string& path) {
 
 // A path in the test temporary folder that no other process uses (ctest -j, other builds).
 inline std::string UniqueTempPath(const std::string& name) {
-  static int counter = 0;
-  return ::testing::TempDir() + "/tehl_" + std::to_string(getpid()) + "_" +
-         std::to_string(counter++) + "_" + name;
+  return testing::ScratchPath("tehl", name);
 }
 
 // `args` is appended to the program path as shell words; paths must not contain quotes.

@@ -12,6 +12,7 @@
 #include "scene/gear_case.hpp"
 #include "tehl/error.hpp"
 #include "tehl/units.hpp"
+#include "support/scratch_path.hpp"
 
 namespace tehl {
 namespace {
@@ -25,7 +26,7 @@ std::string CaseText(const std::string& name) {
 
 // Writes `text` (a case) beside the shipped cases' lubricants and reads it as a gear case.
 std::string WriteCase(const std::string& text, const std::string& name) {
-  const std::string path = ::testing::TempDir() + "/tehl_dyn_" + name + ".toml";
+  const std::string path = testing::ScratchPath("tehl_dyn", name + ".toml");
   std::ofstream(path) << std::regex_replace(text, std::regex("name = \"sae40\""),
                                             "name = \"" TEHL_SOURCE_DIR "/lubricants/sae40.toml\"");
   return path;

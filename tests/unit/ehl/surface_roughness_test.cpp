@@ -12,15 +12,15 @@
 
 #include "tehl/error.hpp"
 #include "tehl/units.hpp"
+#include "support/scratch_path.hpp"
 
 namespace tehl {
 namespace {
 
 std::string WriteTemp(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("tehl_surface_roughness_test_" + std::to_string(::getpid()) + "_" + name);
+  const std::string path = testing::ScratchPath("tehl_surface_roughness", name);
   std::ofstream(path) << text;
-  return path.string();
+  return path;
 }
 
 // Runs ReadFile and returns the problems of the InputError it must throw.

@@ -11,13 +11,14 @@
 #include <sstream>
 
 #include "tehl/io/hdf5_writer.hpp"
+#include "support/scratch_path.hpp"
 
 namespace tehl::internal {
 namespace {
 namespace fs = std::filesystem;
 
 TEST(CsvTable, WritesHeaderAndRows) {
-  const std::string path = ::testing::TempDir() + "/tehl_csv_" + std::to_string(getpid()) + ".csv";
+  const std::string path = testing::ScratchPath("tehl_csv", "table.csv");
   WriteCsvTable(path, {{"s_m", {0.0, 1e-3}}, {"h_c_m", {8e-7, 9e-7}}});
   std::ifstream in(path);
   std::string header, row1, row2;
@@ -34,8 +35,7 @@ TEST(CsvTable, WritesHeaderAndRows) {
 }
 
 TEST(CsvTable, NonFiniteValueIsRefusedAndNothingIsWritten) {
-  const std::string path =
-      ::testing::TempDir() + "/tehl_csv_nan_" + std::to_string(getpid()) + ".csv";
+  const std::string path = testing::ScratchPath("tehl_csv", "nan.csv");
   fs::remove(path);
   try {
     WriteCsvTable(path, {{"p_max_pa", {1.0, std::numeric_limits<double>::infinity()}}});

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "unit/io/hdf5_read.hpp"
+#include "support/scratch_path.hpp"
 
 namespace tehl {
 namespace {
@@ -20,7 +21,7 @@ using testing::Hdf5StringAttribute;
 using testing::Hdf5Text;
 
 std::string TempFile(const std::string& name) {
-  return ::testing::TempDir() + "/tehl_h5_" + std::to_string(getpid()) + "_" + name;
+  return testing::ScratchPath("tehl_h5", name);
 }
 
 TEST(Hdf5Writer, WritesVectorsMatricesTextAndUnitsThatReadBack) {

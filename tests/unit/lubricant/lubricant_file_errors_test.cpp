@@ -10,6 +10,7 @@
 
 #include "tehl/error.hpp"
 #include "tehl/lubricant/lubricant.hpp"
+#include "support/scratch_path.hpp"
 
 namespace tehl {
 namespace {
@@ -166,8 +167,7 @@ TEST(LubricantFile, SyntaxErrorGivesItsLine) {
 }
 
 TEST(LubricantFile, BinaryAndMissingFilesAreInputErrors) {
-  const std::string path =
-      ::testing::TempDir() + "/tehl_" + std::to_string(getpid()) + "_lubricant_binary.toml";
+  const std::string path = testing::ScratchPath("tehl", "lubricant_binary.toml");
   {
     std::ofstream out(path, std::ios::binary);
     out << "name = \"oil\"\n" << std::string("\x00\x01\xff\xfe", 4);

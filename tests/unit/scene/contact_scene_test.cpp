@@ -16,14 +16,14 @@
 #include "scene/contact_csv.hpp"
 #include "tehl/io/hdf5_writer.hpp"
 #include "tehl/units.hpp"
+#include "support/scratch_path.hpp"
 
 namespace tehl {
 namespace {
 namespace fs = std::filesystem;
 
 fs::path TempDir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("tehl_contact_" + name);
-  fs::remove_all(d);
+  const fs::path d = testing::ScratchPath("tehl_contact", name);
   fs::create_directories(d);
   return d;
 }

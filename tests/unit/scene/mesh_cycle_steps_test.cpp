@@ -9,6 +9,7 @@
 
 #include "tehl/error.hpp"
 #include "tehl/scene/mesh_cycle_scene.hpp"
+#include "support/scratch_path.hpp"
 
 namespace tehl {
 namespace {
@@ -69,7 +70,7 @@ TEST(MeshCycleSteps, TooFewStepsForMovingRoughnessIsAnInputError) {
   text << in.rdbuf();
   std::string t = text.str();
   t.replace(t.find("[numerics]\n"), 11, "[numerics]\nsteps = 20\n");
-  const std::string path = ::testing::TempDir() + "/tehl_rough_steps.toml";
+  const std::string path = testing::ScratchPath("tehl", "rough_steps.toml");
   std::ofstream(path) << t;
   MeshCycleRunOptions o;
   o.quiet = true;

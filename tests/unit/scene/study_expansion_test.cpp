@@ -13,6 +13,7 @@
 #include "tehl/error.hpp"
 #include "tehl/scene/case_schema.hpp"
 #include "tehl/scene/study.hpp"
+#include "support/scratch_path.hpp"
 
 namespace tehl {
 namespace {
@@ -21,9 +22,7 @@ namespace fs = std::filesystem;
 const std::string kBase = std::string(TEHL_SOURCE_DIR) + "/cases/seed004_sae40.toml";
 
 std::string WriteStudy(const std::string& name, const std::string& body) {
-  static int counter = 0;
-  const fs::path dir = fs::path(::testing::TempDir()) /
-                       ("tehl_study_" + std::to_string(getpid()) + "_" + std::to_string(counter++));
+  const fs::path dir = testing::ScratchPath("tehl_study", "dir");
   fs::create_directories(dir);
   const std::string path = (dir / name).string();
   std::ofstream(path) << "[study]\nbase = \"" << kBase << "\"\noutput = \"" << (dir / "out").string()
