@@ -26,18 +26,22 @@ bool CoarseCorrection::Build(const NewtonSystem& sys, int stride) {
   const int g = stride;
   // kh[d] = sum_t (1 - |t|/G) K_|d - t|: the deflection (per unit p_ref, scaled to H) a
   // distance d from the centre of a unit hat.
+  // The triangle (1 - |t|/G) is (1/G) times a box of G ones convolved with itself, so kh is
+  // two running box sums of the even extension K'(j) = K_|j| (zero for |j| >= n): O(n) with
+  // prefix sums, kept in long double so that their differences keep double precision.
   std::vector<double> kh(n, 0.0);
   if (sys.elastic) {
-    std::vector<double> k(n);
-    for (int q = 0; q < n; ++q) k[q] = sys.elastic->Coefficient(q);
-    for (int d = 0; d < n; ++d) {
-      double s = 0;
-      for (int t = -(g - 1); t <= g - 1; ++t) {
-        const int q = std::abs(d - t);
-        if (q < n) s += (1.0 - std::abs(t) / static_cast<double>(g)) * k[q];
-      }
-      kh[d] = s;
+    const int lo = -(g - 1), hi = n + g - 2;  // j = d - t ranges over lo .. hi
+    std::vector<long double> pk(hi - lo + 2, 0.0L);  // pk[i] = sum of K'(j), lo <= j < lo + i
+    for (int j = lo; j <= hi; ++j) {
+      const int q = std::abs(j);
+      pk[j - lo + 1] = pk[j - lo] + (q < n ? sys.elastic->Coefficient(q) : 0.0);
     }
+    // box(j) = sum_{a=0}^{G-1} K'(j - a) for j = 0 .. hi; pb its prefix sums.
+    std::vector<long double> pb(hi + 2, 0.0L);
+    for (int j = 0; j <= hi; ++j) pb[j + 1] = pb[j] + (pk[j - lo + 1] - pk[j - g + 1 - lo]);
+    // kh[d] = (1/G) sum_{j=d}^{d+G-1} box(j).
+    for (int d = 0; d < n; ++d) kh[d] = static_cast<double>((pb[d + g] - pb[d]) / g);
   }
   // Test functions W: hat l at row i (row index i - 1), both hats that cover node i.
   e_.setZero(nc + 1, nc + 1);

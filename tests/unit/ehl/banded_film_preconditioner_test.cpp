@@ -32,8 +32,7 @@ TEST(BandedFilmPreconditioner, FullBandSolveIsADirectSolveOfTheJacobian) {
 // The coarse matrix E = W^T J Z built from the hat-smoothed kernel equals the product formed
 // column by column with the Jacobian's own (FFT) product, and the correction C = Z E^{-1} W^T
 // is a Galerkin projection: W^T (x - J C x) = 0 for any x.
-TEST(CoarseCorrection, CoarseMatrixIsTheGalerkinProductOfTheJacobian) {
-  const int n = 513, g = 16;
+void ExpectGalerkinProduct(int n, int g) {
   testing::RandomNewtonSystem rs(n, 5);
   internal::CoarseCorrection cc;
   ASSERT_TRUE(cc.Build(rs.sys, g));
@@ -64,6 +63,14 @@ TEST(CoarseCorrection, CoarseMatrixIsTheGalerkinProductOfTheJacobian) {
   const Eigen::VectorXd coarse_residual = z.transpose() * (x - jcx);
   EXPECT_LE(coarse_residual.norm(), 1e-10 * (z.transpose() * x).norm());
 }
+
+TEST(CoarseCorrection, CoarseMatrixIsTheGalerkinProductOfTheJacobian) {
+  ExpectGalerkinProduct(513, 16);
+}
+
+// The hat-smoothed kernel comes from prefix sums over the whole grid: on a large grid their
+// differences must still keep double precision.
+TEST(CoarseCorrection, GalerkinProductHoldsOnALargeGrid) { ExpectGalerkinProduct(8193, 64); }
 
 }  // namespace
 }  // namespace tehl
