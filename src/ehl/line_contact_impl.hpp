@@ -52,14 +52,22 @@ class LineContactSolver::Impl {
   void UpdateRowWeights(const Scales& sc);
   internal::NewtonSystem SystemFor(const Scales& sc, double load) const;
   // Scaled residual F(z) of a state; false if the film is not positive or not finite.
-  // `linearize` also refreshes the derivatives and the row weights.
+  // `linearize` also refreshes the derivatives and, unless `refresh_weights` is false, the row
+  // weights.
   bool Residual(const ContactConditions& c,
                 const internal::FluidLaws& fluid,
                 const Scales& sc,
                 const internal::TimeDerivative& td,
                 FilmState* s,
                 Eigen::VectorXd* f,
-                bool linearize);
+                bool linearize,
+                bool refresh_weights = true);
+  // F(z) from the Reynolds residual last evaluated (for state s) and the current row weights;
+  // sets cavitated_. False if not finite.
+  bool ComplementarityResidual(const ContactConditions& c,
+                               const Scales& sc,
+                               const FilmState& s,
+                               Eigen::VectorXd* f);
   Summary Newton(const ContactConditions& c,
                  double pressure_scale,
                  const internal::TimeDerivative& td,
