@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "base/schema.hpp"
 #include "ehl/film_field.hpp"
@@ -32,6 +33,17 @@ constexpr int kMinThermalCoarseNodes = 65;
 constexpr double kCouplingNewtonTolerance = 1e-5;
 // Halvings of a temperature update whose pressure solve fails [-].
 constexpr int kMaxTemperatureBackoffs = 4;
+// A coupling past its iteration budget goes on while it still converges: the smallest change
+// of its last kProgressWindow iterations is at most half that of the kProgressWindow before.
+constexpr int kProgressWindow = 10;
+bool StillConverging(const std::vector<double>& change) {
+  const int n = static_cast<int>(change.size());
+  if (n < 2 * kProgressWindow) return false;
+  const auto at = [&](int i) { return change.begin() + i; };
+  const double recent = *std::min_element(at(n - kProgressWindow), at(n));
+  const double before = *std::min_element(at(n - 2 * kProgressWindow), at(n - kProgressWindow));
+  return recent <= 0.5 * before;
+}
 }  // namespace
 
 FilmFriction LineContactSolver::Impl::Friction(const ContactConditions& c, const FilmState& st) {
@@ -173,8 +185,8 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
   // Newton on the coupling (Newtonian thermal runs) takes over from the best iterate when
   // the alternation stalls: no new smallest temperature change for coupling_newton_after
   // iterations, or all iterations used.
-  const bool newton_possible =
-      newton && eff_.thermal && !eff_.non_newtonian && opt_.coupling_newton_after > 0;
+  const bool newton_run = eff_.thermal && !eff_.non_newtonian && opt_.coupling_newton_after > 0;
+  const bool newton_possible = newton && newton_run;
   double best_change = std::numeric_limits<double>::infinity();
   int since_best = 0;
   Eigen::MatrixXd best_t;
@@ -182,7 +194,16 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
   FilmState good_s;        // the last settled pressure ...
   Eigen::MatrixXd good_t;  // ... and its temperature
   int backoffs = 0;
-  for (int k = 0; k < opt_.max_coupling_iterations && !settled; ++k) {
+  std::vector<double> progress;  // per coupling iteration: change_t (thermal) or change_p
+  int k = 0;
+  for (; !settled; ++k) {
+    // Past its budget an alternation goes on while it still converges, unless Newton on the
+    // coupling takes over from its best iterate, here or after the coarse grid (Newtonian
+    // thermal runs).
+    if (k >= opt_.max_coupling_iterations &&
+        !(!newton_run && k < opt_.max_coupling_iterations_converging &&
+          StillConverging(progress)))
+      break;
     // Inexact coupling: while the temperature still moves by more than 10x its tolerance,
     // the pressure need not be solved to the final tolerance.
     opt_.tolerance = change_t > 10 * opt_.thermal_tolerance_k
@@ -262,6 +283,7 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
         break;
       }
     }
+    progress.push_back(eff_.thermal ? change_t : change_p);
     if (std::getenv("TEHL_DEBUG_COUPLING"))
       std::fprintf(stderr, "coupling %d: newton %d dT %g df %g dp %g balance %g backoffs %d\n",
                    k, sum.total_iterations, change_t, change_f, change_p, balance, backoffs);
@@ -296,8 +318,7 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
     sum.message =
         !energy_failure.empty()
             ? "energy equation: " + energy_failure
-            : "the pressure/temperature coupling did not settle in " +
-                  std::to_string(opt_.max_coupling_iterations) +
+            : "the pressure/temperature coupling did not settle in " + std::to_string(k) +
                   " iterations (last temperature change " + internal::FormatReal(change_t) +
                   " K, pressure change " + internal::FormatReal(change_p) +
                   " p_max, largest log change "

@@ -112,6 +112,8 @@ std::vector<std::string> LineContactSolver::Options::Validate() const {
   rule(coupling_pressure_tolerance > 0, "coupling_pressure_tolerance", coupling_pressure_tolerance,
        "> 0");
   rule(max_coupling_iterations >= 1, "max_coupling_iterations", max_coupling_iterations, ">= 1");
+  rule(max_coupling_iterations_converging >= 1, "max_coupling_iterations_converging",
+       max_coupling_iterations_converging, ">= 1");
   rule(thermal_relaxation > 0 && thermal_relaxation <= 1, "thermal_relaxation", thermal_relaxation,
        "in (0, 1]");
   rule(coupling_newton_after >= 0, "coupling_newton_after", coupling_newton_after, ">= 0");

@@ -123,6 +123,11 @@ class LineContactSolver {
     double thermal_tolerance_k = 0.01;     // [K]
     double coupling_pressure_tolerance = 1e-4;  // non-Newtonian: max |p change| / p_max [-]
     int max_coupling_iterations = 40;      // [-]
+    // A coupling still converging after max_coupling_iterations (its smallest change over
+    // the last 10 iterations at most half that over the 10 before: the temperature change
+    // in thermal runs, the pressure change otherwise) goes on, up to this many; not where
+    // Newton on the coupling takes over instead (Newtonian thermal runs) [-].
+    int max_coupling_iterations_converging = 160;
     double thermal_relaxation = 0.8;       // T <- T + relaxation (T_energy - T) [-]
     // Newtonian thermal runs: when the alternation has not reduced its temperature change
     // for this many iterations (or has used them all), Newton-Krylov on the coupling takes
