@@ -33,6 +33,9 @@ constexpr int kMinThermalCoarseNodes = 65;
 constexpr double kCouplingNewtonTolerance = 1e-5;
 // Halvings of a temperature update whose pressure solve fails [-].
 constexpr int kMaxTemperatureBackoffs = 4;
+// A failed Newtonian thermal coupling names the non-Newtonian effect above this |SRR| [-]
+// (the cool branch of the sliding Newtonian disc of docs/thermal.md ends near 0.055).
+constexpr double kSlidingHintSrr = 0.05;
 // A coupling past its iteration budget goes on while it still converges: the smallest change
 // of its last kProgressWindow iterations is at most half that of the kProgressWindow before.
 constexpr int kProgressWindow = 10;
@@ -325,6 +328,17 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
                   "of the Eyring factor " +
                   internal::FormatReal(change_f) + ")" +
                   (newton_message.empty() ? "" : "; Newton on the coupling: " + newton_message);
+    // A sliding Newtonian film: its shear heating grows with the pressure-viscosity without
+    // the bound of a shear-thinning oil (the Ree-Eyring films of docs/validation.md section 6
+    // settle at all 15 sliding points, the Newtonian ones at 3).
+    const double srr = (c.u1_m_s - c.u2_m_s) / c.um();
+    if (eff_.thermal && !eff_.non_newtonian && std::abs(srr) > kSlidingHintSrr) {
+      char srr_text[32];
+      std::snprintf(srr_text, sizeof srr_text, "%.3g", srr);
+      sum.message += std::string("; a Newtonian film sliding at SRR ") + srr_text +
+                     ": the effect non_newtonian (Ree-Eyring, docs/thermal.md) bounds its shear "
+                     "stress and settles where the Newtonian film often does not";
+    }
   }
   sum.total_iterations = total;
   sum.krylov_iterations = krylov;

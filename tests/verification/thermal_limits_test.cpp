@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "tehl/lubricant/lubricant.hpp"
 #include "verification/thermal_disc_case.hpp"
@@ -152,8 +153,9 @@ void ExpectResolutionIndependent(double srr, int n) {
 
 // The sliding Newtonian disc at L_T = 1 does not converge yet (docs/thermal.md, "Open
 // points"); whatever the coupling does, the solve returns: converged, or a termination and a
-// message, a finite state and p >= 0 (the contract of LineContactSolver::Summary). The
-// diverging coupling once reached the energy solver's input checks, which threw.
+// message, a finite state and p >= 0 (the contract of LineContactSolver::Summary); a coupling
+// that does not settle points to the Ree-Eyring film. The diverging coupling once reached the
+// energy solver's input checks, which threw.
 TEST(ThermalLimits, SlidingNewtonianDiscConvergesOrStopsWithADiagnostic) {
   ThermalDisc d;
   d.um_m_s = testing::SpeedForLoading(Sae40(), 1.0);
@@ -164,6 +166,11 @@ TEST(ThermalLimits, SlidingNewtonianDiscConvergesOrStopsWithADiagnostic) {
     if (!r.summary.usable()) {
       EXPECT_NE(r.summary.termination, LineContactSolver::Termination::kConverged);
       EXPECT_FALSE(r.summary.message.empty()) << "SRR " << srr;
+      // A coupling that fails in sliding names the film model that settles there.
+      if (r.summary.termination == LineContactSolver::Termination::kCouplingNotConverged)
+        EXPECT_NE(r.summary.message.find("effect non_newtonian"), std::string::npos)
+            << r.summary.message;
+      std::printf("SRR %.1f: %s\n", srr, r.summary.message.c_str());
     }
     EXPECT_TRUE(r.state.p_pa.allFinite()) << "SRR " << srr;
     EXPECT_GE(r.state.p_pa.minCoeff(), 0.0) << "SRR " << srr;
