@@ -63,14 +63,17 @@ CrossFilmCoefficients CrossFilmIntegrals(const double* eta, const double* deta,
   CrossFilmCoefficients c;
   c.i0 = A.v;
   c.i1 = B.v;
-  // Phi = 12 (rho1 I1/I0 - rho2); F = rho1 (u2 - u1)/I0 + rho_e u1.
+  // Phi = 12 (rho1 I1/I0 - rho2); F = rho1 (u2 - u1)/I0 + rho_e u1. The quotients'
+  // derivatives are formed without I0^2, which underflows to 0 where the film is very viscous
+  // (I0 ~ 1/eta below 1e-162: a 0/0 in the Jacobian, measured at a cold, highly loaded node of
+  // a sliding thermal disc).
   const double ratio = B.v / A.v;
-  const double dratio = (B.d * A.v - B.v * A.d) / (A.v * A.v);
+  const double dratio = (B.d - ratio * A.d) / A.v;
   c.phi = 12.0 * (rho1.v * ratio - rho2.v);
   c.dphi_dp = 12.0 * (rho1.d * ratio + rho1.v * dratio - rho2.d);
   const double du = u2 - u1;
   c.flux = rho1.v * du / A.v + rho_e.v * u1;
-  c.dflux_dp = du * (rho1.d * A.v - rho1.v * A.d) / (A.v * A.v) + rho_e.d * u1;
+  c.dflux_dp = du * (rho1.d - (rho1.v / A.v) * A.d) / A.v + rho_e.d * u1;
   c.rho_e = rho_e.v;
   c.drho_e_dp = rho_e.d;
   return c;

@@ -72,6 +72,9 @@ bool LineContactSolver::Impl::ComplementarityResidual(const ContactConditions& c
   for (int i = 1; i <= m; ++i) {
     const double pi = s.p_pa[i] / sc.p_ref;
     const double ri = row_weight_[i] * sys_.residual()[i];
+    // std::min(pi, NaN) is pi: a Reynolds residual that is not finite (a viscosity that
+    // overflowed at a cold, highly loaded node of a thermal film) must not hide behind it.
+    if (!std::isfinite(ri)) return false;
     cavitated_[i] = pi <= ri;
     (*f)[i - 1] = std::min(pi, ri);
   }

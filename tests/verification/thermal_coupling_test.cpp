@@ -146,14 +146,17 @@ TEST(ThermalCoupling, ACouplingStillConvergingGoesPastItsIterationBudget) {
   FilmState again = s;
   const auto re = solver.SolveSteady(c, &again);
   ASSERT_TRUE(re.usable()) << re.BriefReport();
-  // Solved again from itself it settles on the same film. Not at once: the alternation
-  // restarts its Eyring factor and Anderson history, and converges as slowly as before. The
-  // stopping test (temperature change < 0.01 K per iteration) at a contraction of about 0.93
-  // per iteration (a half per 10) leaves up to 0.01 / (1 - 0.93) = 0.14 K to the fixed point.
+  // Solved again from itself it settles on the same film, within a few alternations: it
+  // starts from the settled temperature and the Eyring factor of the settled pressure (4
+  // iterations measured; 26 when that factor was only relaxed half-way from 1, the
+  // isothermal non-Newtonian rule), though without its Anderson history. The stopping test
+  // (temperature change < 0.01 K per iteration) at a contraction of about 0.93 per iteration
+  // (a half per 10) leaves up to 0.01 / (1 - 0.93) = 0.14 K to the fixed point.
   const double dt_max = (again.temperature.t_k - s.temperature.t_k).cwiseAbs().maxCoeff();
   std::printf("again: %d coupling iterations, max |dT| %.3g K, h_c %.6g vs %.6g um\n",
               re.coupling_iterations, dt_max, again.CentralFilm(solver.grid()) * 1e6,
               s.CentralFilm(solver.grid()) * 1e6);
+  EXPECT_LE(re.coupling_iterations, 6);
   EXPECT_LT(dt_max, 0.2);
   EXPECT_NEAR(again.CentralFilm(solver.grid()), s.CentralFilm(solver.grid()),
               1e-4 * s.CentralFilm(solver.grid()));

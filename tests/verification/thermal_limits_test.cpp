@@ -191,5 +191,24 @@ TEST(ThermalLimits, ResolutionIndependentAt513Nodes) {
 }
 #endif
 
+// A viscosity that overflows at one node (Roelands at 1 TPa: exp of about 2000) leaves the
+// generalized Reynolds coefficients 0/0 there. The residual must say so: min(p, NaN) is p, so
+// a complementarity residual formed without a check reported such a state as finite, and the
+// NaN Jacobian then broke the preconditioners of a sliding thermal disc (docs/thermal.md).
+TEST(ThermalLimits, ANonFiniteReynoldsResidualIsNotHiddenByTheComplementarity) {
+  ThermalDisc d;
+  d.um_m_s = testing::SpeedForLoading(Sae40(), 0.1);
+  LineContactSolver solver = DiscSolver(d, Sae40(), 129, true);
+  const ContactConditions c = d.Conditions(Sae40());
+  FilmState s;
+  ASSERT_TRUE(solver.SolveSteady(c, &s).usable());
+  const double settled = solver.ResidualNorm(c, s);
+  EXPECT_TRUE(std::isfinite(settled));
+  EXPECT_LT(settled, 1e-6);
+  FilmState spiked = s;
+  spiked.p_pa[64] = 1e12;
+  EXPECT_FALSE(std::isfinite(solver.ResidualNorm(c, spiked)));
+}
+
 }  // namespace
 }  // namespace tehl

@@ -100,6 +100,41 @@ TEST(CrossFilm, PressureDerivativesMatchCentralDifferences) {
   }
 }
 
+// Scaling eta and d(eta)/dp by lambda scales Phi and dPhi/dp by 1/lambda and leaves F and
+// dF/dp unchanged (Phi is linear in the fluidity 1/eta; F depends on its shape only). At
+// lambda = 1e200 the fluidity integral I0 is ~1e-200, whose square underflows: the derivatives
+// must come out finite and scaled, not 0/0 (analysis of the formulas in cross_film.hpp).
+TEST(CrossFilm, AVeryViscousFilmKeepsFiniteScaledDerivatives) {
+  const Lubricant oil = tehl::testing::ReferenceOil();
+  const int nz = 11;
+  const double p = 5e8;
+  std::vector<double> eta(nz), deta(nz), rho(nz), drho(nz);
+  for (int j = 0; j < nz; ++j) {
+    const double xi = j / (nz - 1.0);
+    const ViscosityValue v = oil.viscosity().Evaluate(p, 313.15 + 60.0 * xi * (1.0 - xi));
+    const DensityValue d = oil.density().Evaluate(p, 313.15);
+    eta[j] = v.eta_pa_s;
+    deta[j] = v.deta_dp;
+    rho[j] = d.rho_kg_m3;
+    drho[j] = d.drho_dp;
+  }
+  const auto ref = CrossFilmIntegrals(eta.data(), deta.data(), rho.data(), drho.data(), nz, 1.5,
+                                      0.7);
+  for (double lambda : {1e100, 1e200, 1e250}) {
+    std::vector<double> e2(nz), d2(nz);
+    for (int j = 0; j < nz; ++j) {
+      e2[j] = lambda * eta[j];
+      d2[j] = lambda * deta[j];
+    }
+    const auto c = CrossFilmIntegrals(e2.data(), d2.data(), rho.data(), drho.data(), nz, 1.5, 0.7);
+    ASSERT_TRUE(std::isfinite(c.dphi_dp) && std::isfinite(c.dflux_dp)) << lambda;
+    EXPECT_NEAR(c.phi * lambda, ref.phi, 1e-12 * std::abs(ref.phi)) << lambda;
+    EXPECT_NEAR(c.dphi_dp * lambda, ref.dphi_dp, 1e-12 * std::abs(ref.dphi_dp)) << lambda;
+    EXPECT_NEAR(c.flux, ref.flux, 1e-12 * std::abs(ref.flux)) << lambda;
+    EXPECT_NEAR(c.dflux_dp, ref.dflux_dp, 1e-9 * std::abs(ref.dflux_dp)) << lambda;
+  }
+}
+
 // The velocity profile meets both walls, the trapezoidal quadrature of rho u converges to the
 // flow F h - Phi h^3 p'/12 of the coefficients (the identity derived in ehl/cross_film.hpp),
 // the shear stress is linear with slope h dp/dx in xi, and tau = eta du/dz by central
