@@ -65,7 +65,7 @@ const char* const kCycleSteps = "30";
 // not converge (docs/robustness.md), so its fast version keeps 513 nodes with fewer steps.
 const char* const kFewTeethNodes = "513";
 const char* const kFewTeethSteps = "30";
-// 513 nodes take about a minute for the thermal step at A (docs/robustness.md): the fast
+// 513 nodes take about 80 s for the thermal step at A (docs/robustness.md): the fast
 // version runs 129 nodes, which stops at A with a diagnostic (the diagnostic path in CI).
 const char* const kThermalNodes = "129";
 const char* const kThermalSteps = "12";
