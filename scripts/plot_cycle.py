@@ -57,7 +57,17 @@ def main():
     if "cycle" not in f or "profiles" not in f:
         fail(f"{a.result}: no /cycle or /profiles group: not a tehl mesh-cycle result")
     out = a.output_dir or os.path.dirname(os.path.abspath(a.result))
-    os.makedirs(out, exist_ok=True)
+    try:
+        os.makedirs(out, exist_ok=True)
+    except OSError as e:
+        fail(f"-o/--output-dir {out}: cannot create the folder for the figures ({e.strerror})")
+    if f.attrs.get("converged", "true") == "false":
+        term = f["solver/termination"][:] if "solver/termination" in f else []
+        bad = [i for i, t in enumerate(term) if t.decode() != "converged"]
+        where = f"step {bad[0]} ({term[bad[0]].decode()})" if bad else "a step"
+        print(f"warning: {a.result}: the run did not converge at {where}; the figures show "
+              f"{len(f['cycle/s'])} step(s) written, of which the last did not converge",
+              file=sys.stderr)
     name = os.path.splitext(os.path.basename(a.result))[0]
     cyc = f["cycle"]
     mm, um = 1e3, 1e6

@@ -29,6 +29,12 @@ struct HertzScales {
 };
 HertzScales LineContactHertz(double load_n_per_m, double reduced_radius_m, double e_prime_pa);
 
+// Hertz line-contact theory, on which the film model builds, needs b << R. Cases whose b / R
+// exceeds this bound (p_H > E' / 20: a load or a modulus in the wrong unit) are refused.
+inline constexpr double kMaxHertzWidthRatio = 0.2;  // [-]
+// The largest load per unit width with b <= kMaxHertzWidthRatio R [N/m].
+double MaxHertzLoad(double reduced_radius_m, double e_prime_pa);
+
 // Dimensionless groups of Dowson-Higginson/Hamrock (U, G, W) and Moes (M, L).
 // U = eta0 um / (E' R), G = alpha E', W = w / (E' R); M = W (2U)^-1/2, L = G (2U)^1/4.
 struct DimensionlessGroups {

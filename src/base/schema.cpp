@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <toml.hpp>
@@ -310,6 +311,12 @@ KeySpec Temperature(std::string name, std::string def, std::string meaning) {
   return Real(std::move(name), "K", std::move(def), std::move(meaning), 200.0, 1000.0);
 }
 
+KeySpec Modulus(std::string name, std::string def, std::string meaning) {
+  // Young's moduli of engineering solids, from soft elastomers (about 1 MPa) to diamond
+  // (1.2e12 Pa): a value below 1e6 Pa is almost surely given in GPa or MPa.
+  return Real(std::move(name), "Pa", std::move(def), std::move(meaning), kMinModulusPa, 2e12);
+}
+
 KeySpec Required(KeySpec k, std::string example) {
   k.required = true;
   k.example = std::move(example);
@@ -422,6 +429,8 @@ class DocumentReader {
     auto range_problem = [&](double x) {
       std::string rule = "out of range: must be " + RangeText(k) + UnitSuffix(k.unit);
       if (k.unit == "K" && x < 200.0 && x > -273.15) rule += " (did you give degrees Celsius?)";
+      if (k.unit == "Pa" && k.min == kMinModulusPa && x > 0 && x < kMinModulusPa)
+        rule += " (did you give GPa or MPa? steel is 206e9 Pa)";
       if (!std::isfinite(x)) rule = "must be a finite number";
       Add(line, full, shown, rule, AllowedText(k));
     };
@@ -540,11 +549,15 @@ Document Document::ReadString(const Schema& schema, const std::string& text,
 
 Document Document::ReadFile(const Schema& schema, const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  std::error_code ec;
+  const bool folder = std::filesystem::is_directory(path, ec);
+  if (!in || folder) {
     Document doc;
     doc.schema_ = &schema;
     doc.path_ = path;
-    doc.problems_.Add({path, 0, "(file)", "", "cannot open the " + schema.kind + " file",
+    doc.problems_.Add({path, 0, "(file)", "",
+                       folder ? "is a folder, not a " + schema.kind + " file"
+                              : "cannot open the " + schema.kind + " file",
                        "an existing, readable file"});
     return doc;
   }

@@ -66,6 +66,8 @@ KeySpec Text(std::string name, std::string default_toml, std::string meaning,
 KeySpec Reals(std::string name, std::string unit, std::string default_toml,
               std::string meaning, std::optional<double> min = std::nullopt);
 KeySpec Temperature(std::string name, std::string default_toml, std::string meaning);  // K > 200
+inline constexpr double kMinModulusPa = 1e6;  // smallest Young's modulus accepted [Pa]
+KeySpec Modulus(std::string name, std::string default_toml, std::string meaning);  // Pa, 1e6..2e12
 KeySpec Required(KeySpec k, std::string example);  // marks k required, with an example value
 
 using Value = std::variant<std::monostate, bool, long long, double, std::string,

@@ -12,6 +12,11 @@ HertzScales LineContactHertz(double w, double r, double e_prime) {
   return h;
 }
 
+double MaxHertzLoad(double r, double e_prime) {
+  // b = sqrt(8 w R / (pi E')) = k R  <=>  w = k^2 pi E' R / 8.
+  return kMaxHertzWidthRatio * kMaxHertzWidthRatio * kPi * e_prime * r / 8.0;
+}
+
 DimensionlessGroups LineContactGroups(double eta0, double alpha, double um, double w, double r,
                                       double e_prime) {
   DimensionlessGroups g;

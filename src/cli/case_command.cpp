@@ -1,11 +1,14 @@
 // tehl case --print-default | --check FILE...
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli/commands.hpp"
 #include "scene/case_reader.hpp"
+#include "scene/contact_case.hpp"
 #include "scene/film_case.hpp"
 #include "scene/gear_case.hpp"
+#include "scene/mesh_cycle_plan.hpp"
 #include "tehl/scene/case_schema.hpp"
 
 namespace tehl::cli {
@@ -29,8 +32,15 @@ Command AddCaseCommand(CLI::App& app) {
               // The same readers as a run: schema, cross-key rules, gear geometry, film inputs.
               internal::Document doc = internal::ReadCaseDocument(path);
               if (doc.problems().empty()) {
-                if (doc.HasSection("gear")) internal::ReadGearCase(doc);
-                internal::ReadFilmCase(doc);
+                std::optional<internal::GearCase> gear;
+                if (doc.HasSection("gear")) gear = internal::ReadGearCase(doc);
+                const internal::FilmCase film = internal::ReadFilmCase(doc);
+                if (doc.problems().empty() && gear && gear->pair) {  // the run's plan
+                  const internal::CyclePath cycle(*gear);
+                  internal::PlanMeshCycle(doc, cycle, gear->ReducedModulusPa(), film);
+                } else if (doc.problems().empty() && doc.HasSection("contact")) {
+                  internal::ReadContact(doc);
+                }
               }
               if (doc.problems().empty()) std::cout << path << ": ok\n";
               all.Append(doc.problems());

@@ -1,7 +1,9 @@
 // tehl: thermo-elastohydrodynamic lubrication of spur gears. One program, subcommands.
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include "cli/commands.hpp"
@@ -11,7 +13,8 @@ int main(int argc, char** argv) {
   using namespace tehl::cli;
   CLI::App app{
       "tehl: thermo-elastohydrodynamic lubrication of spur gears along the mesh cycle.\n"
-      "Exit codes: 0 success, 1 a solver did not converge, 2 bad input."};
+      "Exit codes: 0 success, 1 a solver did not converge, 2 bad input (including an output\n"
+      "folder that cannot be written), 3 internal error (a defect of tehl: please report it)."};
   app.require_subcommand(1);
   app.set_version_flag("--version", "tehl 0.1.0");
   // One line per subcommand; each lives in its own file.
@@ -25,6 +28,20 @@ int main(int argc, char** argv) {
       AddTrainCommand(app),
       AddDynamicsCommand(app),
   };
+  // A first word that is neither an option nor a command is a mistyped command: name it.
+  if (argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    std::string names;
+    for (const auto& c : commands) {
+      known = known || c.app->get_name() == argv[1];
+      names += (names.empty() ? "" : ", ") + c.app->get_name();
+    }
+    if (!known) {
+      std::cerr << "tehl: unknown command '" << argv[1] << "' (allowed: " << names
+                << "; tehl --help lists them)\n";
+      return kExitBadInput;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -42,6 +59,13 @@ int main(int argc, char** argv) {
       if (c.app->parsed()) return c.run();
   } catch (const tehl::InputError& e) {
     std::cerr << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // Result folders and files come from -o/--output-dir or [output] directory and name.
+    std::cerr << "tehl: cannot write the results: " << e.code().message() << ": "
+              << e.path1().string()
+              << " (allowed: a folder that can be created and written; see -o/--output-dir "
+                 "and [output] directory)\n";
     return kExitBadInput;
   } catch (const std::exception& e) {
     std::cerr << "tehl: internal error: " << e.what() << "\n";

@@ -97,7 +97,7 @@ Command AddRunCommand(CLI::App& app) {
                 "Mesh cycle: leave a complete result alone, else continue from its checkpoint");
   sub->add_option("--checkpoint-every", args->checkpoint_every,
                   "Mesh cycle: write a checkpoint every N steps (0 = never)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, 10000000));
   return {sub, [args]() {
             // The scene is chosen by the section the file has; each scene reports every
             // problem of its own (a file with neither section is reported by the contact

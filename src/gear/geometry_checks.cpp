@@ -229,17 +229,29 @@ class Checker {
   }
 
   void ContactRatios() {
+    // A centre distance opened beyond zero backlash shortens the path of contact: it is the
+    // key to blame when the contact ratio is too small.
+    const bool opened = s_.center_distance_m > 0 &&
+                        pair_.center_distance_m() >
+                            pair_.zero_backlash_center_distance_m() + 1e-4 * s_.module_m;
     for (Flank f : {Flank::kDrive, Flank::kCoast}) {
       if (f == Flank::kCoast && Symmetric()) break;
       const double eps = pair_.line(f).contact_ratio;
-      const std::string key =
+      const std::string angle_key =
           f == Flank::kDrive ? "pressure_angle_deg" : "coast_pressure_angle_deg";
       const ContactRatioAssessment r = AssessContactRatio(eps);
       const std::string what =
-          "transverse contact ratio" + FlankLabel(f) + " eps_alpha = " + Num(eps);
-      const std::string raise =
+          eps > 0 ? "transverse contact ratio" + FlankLabel(f) + " eps_alpha = " + Num(eps)
+                  : "the tip circles" + FlankLabel(f) +
+                        " do not overlap on the line of action (no contact): eps_alpha";
+      std::string raise =
           "eps_alpha >= 1.2 (seed 003 section 4.1): more teeth, larger tip radii "
           "(addendum_coefficient) or a smaller pressure angle";
+      if (opened)
+        raise = "eps_alpha >= 1.2 (seed 003 section 4.1): center_distance_m nearer " +
+                Num(pair_.zero_backlash_center_distance_m(), 6) +
+                " [m] (zero backlash), more teeth or larger tip radii";
+      const std::string key = !r.continuous && opened ? "center_distance_m" : angle_key;
       if (!r.continuous) {
         if (f == Flank::kDrive)
           Error("gear", key, what + " < 1: the mesh is not continuous", raise);

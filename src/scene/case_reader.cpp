@@ -29,9 +29,10 @@ std::string ResolveLubricantPath(const std::string& name, const std::string& cas
 
 Document ReadCaseDocument(const std::string& path) {
   Document doc = Document::ReadFile(CaseSchema(), path);
-  if (!doc.problems().empty() && !doc.HasSection("lubricant") && !doc.HasSection("gear") &&
-      !doc.HasSection("contact"))
-    return doc;  // unreadable file: the cross-key rules would only repeat the problem
+  // An unreadable file (a problem of the file itself or of its TOML syntax): the cross-key rules
+  // would only repeat it.
+  for (const InputProblem& p : doc.problems())
+    if (p.key == "(file)" || p.key == "(syntax)") return doc;
 
   const bool gear = doc.HasSection("gear") || doc.HasSection("gear.pinion") ||
                     doc.HasSection("gear.wheel");
@@ -46,9 +47,16 @@ Document ReadCaseDocument(const std::string& path) {
       if (!doc.HasSection(member))
         doc.Problem(member, "", "required section is missing for a gear case",
                     std::string("a [") + member + "] table with at least teeth");
-    const int speeds = doc.Given("operating", "pinion_speed_rpm") +
-                       doc.Given("operating", "pinion_speed_rad_s");
-    const int loads = doc.Given("operating", "power_w") + doc.Given("operating", "pinion_torque_nm");
+    // A key written with a wrong value (reported above) counts as given: it is not missing.
+    auto written = [&](const char* key) {
+      if (doc.Given("operating", key)) return 1;
+      const std::string full = std::string("operating.") + key;
+      for (const InputProblem& p : doc.problems())
+        if (p.key == full) return 1;
+      return 0;
+    };
+    const int speeds = written("pinion_speed_rpm") + written("pinion_speed_rad_s");
+    const int loads = written("power_w") + written("pinion_torque_nm");
     if (doc.HasSection("motor")) {  // the motor gives the speed, the load the torque
       if (speeds > 0)
         doc.Problem("operating", doc.Given("operating", "pinion_speed_rpm") ? "pinion_speed_rpm"

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "scene/case_reader.hpp"
+#include "scene/contact_case.hpp"
 #include "scene/contact_csv.hpp"
 #include "scene/film_case.hpp"
 #include "tehl/error.hpp"
@@ -17,15 +18,9 @@
 namespace tehl {
 namespace {
 namespace fs = std::filesystem;
+using internal::ContactInputs;
 using internal::Document;
-
-struct ContactInputs {
-  double r1 = 0, r2 = 0;             // radii; r2 = 0 means a plane [m]
-  double e_prime = 0;                // [Pa]
-  std::vector<double> t, w, u1, u2;  // tables (size 1 for a steady run)
-  int steps = 0;
-  double ReducedRadius() const { return r2 > 0 ? r1 * r2 / (r1 + r2) : r1; }
-};
+using internal::ReadContact;
 
 double Interpolate(const std::vector<double>& t, const std::vector<double>& v, double x) {
   if (v.size() == 1 || x <= t.front()) return v.front();
@@ -34,48 +29,6 @@ double Interpolate(const std::vector<double>& t, const std::vector<double>& v, d
   const size_t k = static_cast<size_t>(it - t.begin()) - 1;
   const double f = (x - t[k]) / (t[k + 1] - t[k]);
   return (1 - f) * v[k] + f * v[k + 1];
-}
-
-ContactInputs ReadContact(Document& doc) {
-  ContactInputs in;
-  in.r1 = doc.Real("contact", "radius_1_m");
-  in.r2 = doc.Given("contact", "radius_2_m") ? doc.Real("contact", "radius_2_m") : 0.0;
-  in.e_prime = ReducedModulus(
-      doc.Real("contact", "youngs_modulus_1_pa"), doc.Real("contact", "poisson_ratio_1"),
-      doc.Real("contact", "youngs_modulus_2_pa"), doc.Real("contact", "poisson_ratio_2"));
-  in.steps = static_cast<int>(doc.Int("contact", "steps"));
-  const double w = doc.Real("contact", "load_n_per_m");
-  const double u1 = doc.Real("contact", "speed_1_m_s"), u2 = doc.Real("contact", "speed_2_m_s");
-  in.t = doc.Reals("contact", "time_s");
-  auto table = [&](const char* key, double fallback) {
-    return doc.Given("contact", key)
-               ? doc.Reals("contact", key)
-               : std::vector<double>(std::max<size_t>(in.t.size(), 1), fallback);
-  };
-  if (in.t.empty()) in.t = {0.0};
-  in.w = table("load_table_n_per_m", w);
-  in.u1 = table("speed_1_table_m_s", u1);
-  in.u2 = table("speed_2_table_m_s", u2);
-  if (in.steps == 0) {  // steady: the first table row (or the scalar keys)
-    in.w = {w};
-    in.u1 = {u1};
-    in.u2 = {u2};
-    in.t = {0.0};
-  }
-  for (size_t i = 0; i < in.u1.size() && i < in.u2.size(); ++i)
-    if (!(in.u1[i] + in.u2[i] > 0)) {
-      doc.Problem("contact", "speed_1_m_s",
-                  "the entrainment speed (u1 + u2)/2 must be > 0 "
-                  "(the inlet is at the grid start)",
-                  "speeds with u1 + u2 > 0 at every time");
-      break;
-    }
-  for (double wi : in.w)
-    if (!(wi > 0)) {
-      doc.Problem("contact", "load_table_n_per_m", "every load must be > 0", "loads > 0 [N/m]");
-      break;
-    }
-  return in;
 }
 
 // Writes `text` to `path` through a temporary file renamed when complete.
@@ -100,12 +53,10 @@ bool ContactRunResult::converged() const {
 
 ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOptions& ro) {
   Document doc = internal::ReadCaseDocument(case_path);
-  if (!doc.HasSection("contact")) {
-    doc.Problem("contact", "",
-                "`tehl run` takes a [contact] case; gear cases are reported by "
-                "`tehl gear` (the mesh-cycle film run is not part of this version)",
+  // ReadCaseDocument has reported a file without [gear] or [contact] (or one it cannot read).
+  if (doc.problems().empty() && !doc.HasSection("contact"))
+    doc.Problem("contact", "", "this is a gear case: `tehl run` runs its mesh cycle",
                 "a case with a [contact] section");
-  }
   doc.ThrowIfProblems();
   const ContactInputs in = ReadContact(doc);
   internal::FilmCase film = internal::ReadFilmCase(doc);
@@ -139,7 +90,10 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
     rec.h_c_m = state.CentralFilm(grid);
     rec.p_max_pa = state.MaxPressure();
     // The same quantities as the mesh cycle's /cycle/T_max and /cycle/mu (mesh_cycle_scene.cpp).
-    rec.friction_coefficient = solver.Friction(c, state).coefficient;
+    // A failed step's film may touch (h <= 0), where friction is undefined: 0 then, and the
+    // step's status column says it failed.
+    const double mu = solver.Friction(c, state).coefficient;
+    rec.friction_coefficient = std::isfinite(mu) ? mu : 0.0;
     rec.t_max_k = thermal && state.temperature.Matches(grid.size(), nz)
                       ? state.temperature.MaxTemperature()
                       : film.inlet_temperature_k;

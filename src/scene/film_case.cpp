@@ -20,8 +20,14 @@ std::shared_ptr<const SurfaceShape> ReadSurface(Document& doc, const std::string
     try {
       return std::make_shared<MeasuredProfile>(MeasuredProfile::ReadFile(file.string()));
     } catch (const InputError& e) {
-      doc.Problem(section, "profile_file", "the profile file is not usable: " +
-                  std::string(e.what()), "a two-column text file (x [m], height [m])");
+      // The profile reader's own problems: where in the profile file, and what is wrong.
+      for (const InputProblem& p : e.problems()) {
+        std::string where = p.file.empty() ? file.string() : p.file;
+        if (p.line > 0) where += ":" + std::to_string(p.line);
+        doc.Problem(section, "profile_file",
+                    "the profile file is not usable: " + where + ": " + p.rule,
+                    p.allowed.empty() ? "a two-column text file (x [m], height [m])" : p.allowed);
+      }
     }
   }
   return nullptr;

@@ -1,10 +1,14 @@
 #include "scene/gear_case.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "drive/motor_schema.hpp"
 #include "scene/dynamic_load.hpp"
 #include "tehl/error.hpp"
+#include "tehl/gear/operating_point.hpp"
 #include "tehl/gear/path_of_contact.hpp"
 #include "tehl/gear/tooth_blank.hpp"
 #include "tehl/units.hpp"
@@ -98,8 +102,10 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
   const bool gear =
       doc.HasSection("gear") || doc.HasSection("gear.pinion") || doc.HasSection("gear.wheel");
   if (!gear) {
-    doc.Problem("gear", "", "this command needs a gear case",
-                "a case with [gear], [gear.pinion], [gear.wheel] and [operating]");
+    // An unreadable file has been reported already; only a readable non-gear case is told.
+    if (doc.problems().empty() || doc.HasSection("contact"))
+      doc.Problem("gear", "", "this command needs a gear case",
+                  "a case with [gear], [gear.pinion], [gear.wheel] and [operating]");
     return std::nullopt;
   }
   if (GearKeysInError(doc)) return std::nullopt;
@@ -144,6 +150,33 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
     }
   }
   if (!geometry_ok) return c;
+
+  // Hertz line-contact theory needs b << R: the whole nominal tooth load at the path end with
+  // the smaller R bounds b / R on the path from above.
+  const PathOfContact path(pair, c.operating.pinion_speed_rad_s);
+  const double r_min =
+      std::min(path.At(0.0).reduced_radius_m, path.At(path.length_m()).reduced_radius_m);
+  const double w_nominal = NominalToothLoad(pair, c.operating).load_per_width_n_per_m;
+  if (r_min > 0 && w_nominal > MaxHertzLoad(r_min, c.ReducedModulusPa())) {
+    const HertzScales hz = LineContactHertz(w_nominal, r_min, c.ReducedModulusPa());
+    char rule[320];
+    std::snprintf(rule, sizeof rule,
+                  "the tooth load %.3g N/m gives a Hertz half-width b = %.3g m against R = "
+                  "%.3g m at the end of the path (p_H = %.3g Pa): Hertz line-contact theory "
+                  "needs b << R",
+                  w_nominal, hz.half_width_m, r_min, hz.max_pressure_pa);
+    const double limit = MaxHertzLoad(r_min, c.ReducedModulusPa()) / w_nominal;
+    const bool power = doc.Given("operating", "power_w");
+    char allowed[160];
+    if (power)
+      std::snprintf(allowed, sizeof allowed, "power_w <= %.3g [W] (b <= 0.2 R)",
+                    c.power_w * limit);
+    else
+      std::snprintf(allowed, sizeof allowed, "pinion_torque_nm <= %.3g [N m] (b <= 0.2 R)",
+                    c.operating.pinion_torque_nm * limit);
+    doc.Problem("operating", power ? "power_w" : "pinion_torque_nm", rule, allowed);
+    return c;
+  }
 
   const double eps = pair.line(Flank::kDrive).contact_ratio;
   if (c.load_sharing == LoadSharing::kLinear && eps >= 2.0)

@@ -185,6 +185,11 @@ void WriteMeshCycleCsv(const std::string& path, const MeshCycleResult& r) {
                                                : "_" + unit;
     table.push_back({std::string(c.name) + suffix, Column(r, c)});
   }
+  // Whether each row's solve converged (1) or not (0): a run that stops writes its last,
+  // unconverged step too (its termination is in the HDF5 file's /solver/termination).
+  std::vector<double> converged;
+  for (const MeshCycleStep& k : r.steps) converged.push_back(k.summary.usable() ? 1.0 : 0.0);
+  table.push_back({"converged", converged});
   WriteCsvTable(path, table);
 }
 

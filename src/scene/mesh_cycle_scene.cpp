@@ -16,6 +16,7 @@
 #include "scene/gear_case.hpp"
 #include "scene/mesh_cycle_checkpoint.hpp"
 #include "scene/mesh_cycle_output.hpp"
+#include "scene/mesh_cycle_plan.hpp"
 #include "tehl/error.hpp"
 #include "tehl/gear/load_sharing.hpp"
 #include "tehl/gear/path_of_contact.hpp"
@@ -26,62 +27,13 @@ namespace {
 namespace fs = std::filesystem;
 using internal::Document;
 using Clock = std::chrono::steady_clock;
-
-// The path and load of the case at one position s; `left` takes the one-sided limit from
-// below at the switch points B and D (the load arriving there).
-struct PathState {
-  ContactPoint contact;
-  double load_n_per_m = 0;         // the film's load (dynamic when dynamic_load is on) [N/m]
-  double static_load_n_per_m = 0;  // the static load sharing [N/m]
-};
-
-class CyclePath {
- public:
-  explicit CyclePath(const internal::GearCase& c)
-      : gear_(c),
-        path_(*c.pair, c.operating.pinion_speed_rad_s),
-        w_nominal_(NominalToothLoad(*c.pair, c.operating).load_per_width_n_per_m) {}
-
-  const PathOfContact& path() const { return path_; }
-
-  PathState At(double s, bool left) const {
-    const double nudge = 1e-9 * path_.length_m();
-    double q = s;
-    if (left && s > nudge)
-      q = s - nudge;
-    else if (!left && s < path_.length_m() - nudge)
-      q = s + nudge;
-    PathState st;
-    st.contact = path_.At(s);
-    st.contact.pairs_in_contact = path_.At(q).pairs_in_contact;
-    const double share = gear_.load_sharing == LoadSharing::kLinear
-                             ? LinearLoadShare(path_, q)
-                             : StiffnessLoadShare(path_, q, gear_.pair_stiffness);
-    st.static_load_n_per_m = share * w_nominal_;
-    // [effects] dynamic_load: the tracked pair's load of the periodic torsional response.
-    st.load_n_per_m = st.static_load_n_per_m *
-                      (gear_.dynamic_load ? gear_.dynamic_load->LoadFactorAt(s, left) : 1.0);
-    return st;
-  }
-
- private:
-  const internal::GearCase& gear_;
-  PathOfContact path_;
-  double w_nominal_;
-};
+using internal::CyclePath;
+using internal::PathState;
+using internal::SegmentEnds;
 
 std::string Zone(const MeshCycleResult& r, double s) {
   if (r.s_b_m < r.s_d_m) return s <= r.s_b_m ? "A-B" : (s <= r.s_d_m ? "B-D" : "D-E");
   return s <= r.s_d_m ? "A-D" : (s <= r.s_b_m ? "D-B" : "B-E");  // eps_alpha >= 2
-}
-
-std::vector<double> SegmentEnds(double g, double sb, double sd) {
-  std::vector<double> ends;
-  for (double sw : {sb, sd})
-    if (sw > 1e-9 * g && sw < g * (1 - 1e-9)) ends.push_back(sw);
-  std::sort(ends.begin(), ends.end());
-  ends.push_back(g);
-  return ends;
 }
 
 }  // namespace
@@ -162,60 +114,13 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   r.u0_m_s = pitch.contact.um_m_s;
   r.w0_n_per_m = pitch.load_n_per_m;
 
-  // b_max and the entrainment transits over a fine sampling of the path (both sides of B, D).
-  const int samples = 400;
-  double transits = 0, um_max = 0;
-  for (int i = 0; i <= samples; ++i) {
-    const double s = r.length_m * i / samples;
-    for (bool left : {true, false}) {
-      const PathState st = cycle.At(s, left);
-      const double b =
-          LineContactHertz(st.load_n_per_m, st.contact.reduced_radius_m, e_prime).half_width_m;
-      r.max_half_width_m = std::max(r.max_half_width_m, b);
-      um_max = std::max(um_max, st.contact.um_m_s);
-      if (left && i > 0) transits += st.contact.um_m_s / b * (path.duration_s() / samples);
-    }
-  }
-  const UniformGrid grid =
-      UniformGrid::AroundHertz(r.max_half_width_m, film.grid_points, film.x_start_b, film.x_end_b);
-
-  // Step count: the user's, or automatic; with roughness at least dt <= dx/um per segment.
-  const long long user_steps = doc.Int("numerics", "steps");
-  const int auto_steps = AutomaticMeshCycleSteps(transits);
-  std::vector<int> min_seg;
-  int rough_total = 0;
-  if (film.effects.roughness) {
-    double a = 0;
-    for (double e : SegmentEnds(r.length_m, r.s_b_m, r.s_d_m)) {
-      double um_seg = 0;
-      for (int i = 0; i <= 50; ++i) um_seg = std::max(um_seg, path.At(a + (e - a) * i / 50).um_m_s);
-      const int need = static_cast<int>(
-          std::ceil((e - a) / path.contact_speed_m_s() * um_seg / grid.dx_m() - 1e-9));
-      min_seg.push_back(std::max(need, 1));
-      rough_total += min_seg.back();
-      a = e;
-    }
-  }
-  int steps = user_steps > 0 ? static_cast<int>(user_steps) : auto_steps;
-  if (user_steps > 0 && film.effects.roughness && user_steps < rough_total) {
-    doc.Problem("numerics", "steps",
-                "with moving roughness the cycle needs dt <= dx/um: at least " +
-                    std::to_string(rough_total) + " steps on this grid",
-                "0 (automatic) or >= " + std::to_string(rough_total));
-    doc.ThrowIfProblems();
-  }
-  const std::vector<double> s_steps =
-      MeshCycleStepPositions(r.length_m, r.s_b_m, r.s_d_m, steps, min_seg);
+  const internal::MeshCyclePlan plan = internal::PlanMeshCycle(doc, cycle, e_prime, film);
+  doc.ThrowIfProblems();
+  r.max_half_width_m = plan.max_half_width_m;
+  const UniformGrid& grid = plan.grid;
+  const std::vector<double>& s_steps = plan.s_steps;
   r.planned_steps = static_cast<int>(s_steps.size()) - 1;
-  char rule[256];
-  if (user_steps > 0)
-    std::snprintf(rule, sizeof rule, "[numerics] steps = %lld", user_steps);
-  else
-    std::snprintf(rule, sizeof rule,
-                  "automatic: 4 steps per entrainment transit of b (%.1f transits), "
-                  "clamped to 100..200%s",
-                  transits, film.effects.roughness ? "; raised to dt <= dx/um (roughness)" : "");
-  r.step_rule = rule;
+  r.step_rule = plan.step_rule;
 
   // The result file is open (under its temporary name) for the whole run.
   std::unique_ptr<Hdf5Writer> h5;
@@ -265,7 +170,10 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
     k.h_min_m = state.MinFilm();
     k.h_c_m = state.CentralFilm(grid);
     k.p_max_pa = state.MaxPressure();
-    k.friction_coefficient = solver.Friction(conditions(st), state).coefficient;
+    // A failed step's film may touch (h <= 0), where friction is undefined: 0 then, and the
+    // step's termination (and the CSV's converged = 0) says it failed.
+    const double mu = solver.Friction(conditions(st), state).coefficient;
+    k.friction_coefficient = std::isfinite(mu) ? mu : 0.0;
     k.t_max_k = k.t_mid_max_k = k.t1_max_k = k.t2_max_k = film.inlet_temperature_k;
     if (r.thermal && state.temperature.Matches(grid.size(), r.film_nodes)) {
       const FilmTemperature& t = state.temperature;

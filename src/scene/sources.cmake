@@ -3,12 +3,14 @@ list(APPEND TEHL_SOURCES
   src/scene/case_schema.cpp
   src/scene/case_reader.cpp
   src/scene/film_case.cpp
+  src/scene/contact_case.cpp
   src/scene/contact_scene.cpp
   src/scene/contact_csv.cpp
   src/scene/gear_case.cpp
   src/scene/dynamic_load.cpp
   src/scene/mesh_cycle_output.cpp
   src/scene/mesh_cycle_checkpoint.cpp
+  src/scene/mesh_cycle_plan.cpp
   src/scene/mesh_cycle_scene.cpp
   src/scene/study_case_text.cpp
   src/scene/study_reader.cpp

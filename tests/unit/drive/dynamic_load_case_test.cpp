@@ -105,7 +105,9 @@ TEST(DynamicLoadEffect, CycleRowsCarryTheDynamicLoadAtTheCaseSpeed) {
 TEST(DynamicLoadEffect, AtVeryLowSpeedTheCycleLoadIsTheStaticLoad) {
   // 1 rpm: quasi-static; away from the 1 % of the period after each stiffness jump the
   // dynamic w equals the static w to 1 % (friction off: it shifts the static balance).
+  // 10 W at 1 rpm: the torque of the case (10 kW at 1000 rpm).
   std::string text = Set(CaseText("seed004_sae40_dynamic"), "pinion_speed_rpm", "1.0");
+  text = Set(text, "power_w", "10.0");
   text = Set(text, "friction", "\"none\"");
   const internal::GearCase c = Read(WriteCase(text, "slow"));
   ASSERT_TRUE(c.dynamic_load);

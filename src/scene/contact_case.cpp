@@ -1,0 +1,78 @@
+#include "scene/contact_case.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "tehl/units.hpp"
+
+namespace tehl::internal {
+namespace {
+
+std::string Short(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+}  // namespace
+
+ContactInputs ReadContact(Document& doc) {
+  ContactInputs in;
+  in.r1 = doc.Real("contact", "radius_1_m");
+  in.r2 = doc.Given("contact", "radius_2_m") ? doc.Real("contact", "radius_2_m") : 0.0;
+  in.e_prime = ReducedModulus(
+      doc.Real("contact", "youngs_modulus_1_pa"), doc.Real("contact", "poisson_ratio_1"),
+      doc.Real("contact", "youngs_modulus_2_pa"), doc.Real("contact", "poisson_ratio_2"));
+  in.steps = static_cast<int>(doc.Int("contact", "steps"));
+  const double w = doc.Real("contact", "load_n_per_m");
+  const double u1 = doc.Real("contact", "speed_1_m_s"), u2 = doc.Real("contact", "speed_2_m_s");
+  in.t = doc.Reals("contact", "time_s");
+  auto table = [&](const char* key, double fallback) {
+    return doc.Given("contact", key)
+               ? doc.Reals("contact", key)
+               : std::vector<double>(std::max<size_t>(in.t.size(), 1), fallback);
+  };
+  if (in.t.empty()) in.t = {0.0};
+  in.w = table("load_table_n_per_m", w);
+  in.u1 = table("speed_1_table_m_s", u1);
+  in.u2 = table("speed_2_table_m_s", u2);
+  if (in.steps == 0) {  // steady: the first table row (or the scalar keys)
+    in.w = {w};
+    in.u1 = {u1};
+    in.u2 = {u2};
+    in.t = {0.0};
+  }
+  for (size_t i = 0; i < in.u1.size() && i < in.u2.size(); ++i)
+    if (!(in.u1[i] + in.u2[i] > 0)) {
+      doc.Problem("contact", "speed_1_m_s",
+                  "the entrainment speed (u1 + u2)/2 must be > 0 "
+                  "(the inlet is at the grid start)",
+                  "speeds with u1 + u2 > 0 at every time");
+      break;
+    }
+  const char* load_key = doc.Given("contact", "load_table_n_per_m") && in.steps > 0
+                             ? "load_table_n_per_m"
+                             : "load_n_per_m";
+  for (double wi : in.w)
+    if (!(wi > 0)) {
+      doc.Problem("contact", load_key, "every load must be > 0", "loads > 0 [N/m]");
+      break;
+    }
+  const double w_limit = MaxHertzLoad(in.ReducedRadius(), in.e_prime);
+  for (double wi : in.w)
+    if (wi > w_limit) {
+      const HertzScales hz = LineContactHertz(wi, in.ReducedRadius(), in.e_prime);
+      doc.Problem("contact", load_key,
+                  "a load of " + Short(wi) + " N/m gives a Hertz half-width b = " +
+                      Short(hz.half_width_m) + " m against R = " +
+                      Short(in.ReducedRadius()) + " m (p_H = " +
+                      Short(hz.max_pressure_pa) + " Pa, E' = " + Short(in.e_prime) +
+                      " Pa): Hertz line-contact theory needs b << R",
+                  "loads <= " + Short(w_limit) + " N/m (b <= 0.2 R) for these bodies");
+      break;
+    }
+  return in;
+}
+
+}  // namespace tehl::internal

@@ -1,0 +1,108 @@
+#include "scene/mesh_cycle_plan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "scene/dynamic_load.hpp"
+#include "tehl/gear/load_sharing.hpp"
+#include "tehl/gear/operating_point.hpp"
+#include "tehl/scene/mesh_cycle_scene.hpp"
+#include "tehl/units.hpp"
+
+namespace tehl::internal {
+
+CyclePath::CyclePath(const GearCase& c)
+    : gear_(c),
+      path_(*c.pair, c.operating.pinion_speed_rad_s),
+      w_nominal_(NominalToothLoad(*c.pair, c.operating).load_per_width_n_per_m) {}
+
+PathState CyclePath::At(double s, bool left) const {
+  const double nudge = 1e-9 * path_.length_m();
+  double q = s;
+  if (left && s > nudge)
+    q = s - nudge;
+  else if (!left && s < path_.length_m() - nudge)
+    q = s + nudge;
+  PathState st;
+  st.contact = path_.At(s);
+  st.contact.pairs_in_contact = path_.At(q).pairs_in_contact;
+  const double share = gear_.load_sharing == LoadSharing::kLinear
+                           ? LinearLoadShare(path_, q)
+                           : StiffnessLoadShare(path_, q, gear_.pair_stiffness);
+  st.static_load_n_per_m = share * w_nominal_;
+  // [effects] dynamic_load: the tracked pair's load of the periodic torsional response.
+  st.load_n_per_m = st.static_load_n_per_m *
+                    (gear_.dynamic_load ? gear_.dynamic_load->LoadFactorAt(s, left) : 1.0);
+  return st;
+}
+
+std::vector<double> SegmentEnds(double g, double sb, double sd) {
+  std::vector<double> ends;
+  for (double sw : {sb, sd})
+    if (sw > 1e-9 * g && sw < g * (1 - 1e-9)) ends.push_back(sw);
+  std::sort(ends.begin(), ends.end());
+  ends.push_back(g);
+  return ends;
+}
+
+MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prime_pa,
+                            const FilmCase& film) {
+  MeshCyclePlan plan;
+  const PathOfContact& path = cycle.path();
+  const double g = path.length_m();
+  // b_max and the entrainment transits over a fine sampling of the path (both sides of B, D).
+  const int samples = 400;
+  double transits = 0;
+  for (int i = 0; i <= samples; ++i) {
+    const double s = g * i / samples;
+    for (bool left : {true, false}) {
+      const PathState st = cycle.At(s, left);
+      const double b =
+          LineContactHertz(st.load_n_per_m, st.contact.reduced_radius_m, e_prime_pa).half_width_m;
+      plan.max_half_width_m = std::max(plan.max_half_width_m, b);
+      if (left && i > 0) transits += st.contact.um_m_s / b * (path.duration_s() / samples);
+    }
+  }
+  plan.grid = UniformGrid::AroundHertz(plan.max_half_width_m, film.grid_points, film.x_start_b,
+                                       film.x_end_b);
+  const UniformGrid& grid = plan.grid;
+
+  // Step count: the user's, or automatic; with roughness at least dt <= dx/um per segment.
+  const long long user_steps = doc.Int("numerics", "steps");
+  const int auto_steps = AutomaticMeshCycleSteps(transits);
+  std::vector<int> min_seg;
+  int rough_total = 0;
+  if (film.effects.roughness) {
+    double a = 0;
+    for (double e : SegmentEnds(g, path.s_b_m(), path.s_d_m())) {
+      double um_seg = 0;
+      for (int i = 0; i <= 50; ++i) um_seg = std::max(um_seg, path.At(a + (e - a) * i / 50).um_m_s);
+      const int need = static_cast<int>(
+          std::ceil((e - a) / path.contact_speed_m_s() * um_seg / grid.dx_m() - 1e-9));
+      min_seg.push_back(std::max(need, 1));
+      rough_total += min_seg.back();
+      a = e;
+    }
+  }
+  int steps = user_steps > 0 ? static_cast<int>(user_steps) : auto_steps;
+  if (user_steps > 0 && film.effects.roughness && user_steps < rough_total) {
+    doc.Problem("numerics", "steps",
+                "with moving roughness the cycle needs dt <= dx/um: at least " +
+                    std::to_string(rough_total) + " steps on this grid",
+                "0 (automatic) or >= " + std::to_string(rough_total));
+  }
+  plan.s_steps = MeshCycleStepPositions(g, path.s_b_m(), path.s_d_m(), steps, min_seg);
+  char rule[256];
+  if (user_steps > 0)
+    std::snprintf(rule, sizeof rule, "[numerics] steps = %lld", user_steps);
+  else
+    std::snprintf(rule, sizeof rule,
+                  "automatic: 4 steps per entrainment transit of b (%.1f transits), "
+                  "clamped to 100..200%s",
+                  transits, film.effects.roughness ? "; raised to dt <= dx/um (roughness)" : "");
+  plan.step_rule = rule;
+  return plan;
+}
+
+}  // namespace tehl::internal

@@ -1,0 +1,100 @@
+// The real program's answers to mistakes of the command line and of the environment (not of a
+// case file's keys, which tests/malformed/ covers): each is exit code 2 with a message naming
+// what was wrong, never an internal error (exit 3); and a run that stops says which rows of
+// its table did not converge.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "unit/cli/run_tehl.hpp"
+
+namespace tehl {
+namespace {
+namespace fs = std::filesystem;
+
+std::string SourcePath(const std::string& relative) {
+  return std::string(TEHL_SOURCE_DIR) + "/" + relative;
+}
+
+TEST(CommandLineErrors, AMistypedCommandIsNamedWithTheAllowedOnes) {
+  const testing::RunResult r = testing::RunTehl("rn cases/disc_steady.toml");
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("unknown command 'rn'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("run"), std::string::npos) << r.err;
+}
+
+TEST(CommandLineErrors, AnOutputFolderThatIsAFileIsBadInput) {
+  const std::string file = testing::UniqueTempPath("not_a_folder");
+  std::ofstream(file) << "x";
+  const testing::RunResult r =
+      testing::RunTehl("run -q '" + SourcePath("cases/disc_steady.toml") + "' -o '" + file + "'");
+  fs::remove(file);
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("cannot write the results"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+}
+
+TEST(CommandLineErrors, AFolderGivenAsTheCaseFileIsNamedAsAFolder) {
+  const std::string dir = testing::UniqueTempPath("case_folder.toml");
+  fs::create_directories(dir);
+  const testing::RunResult r = testing::RunTehl("run '" + dir + "'");
+  fs::remove(dir);
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("is a folder"), std::string::npos) << r.err;
+  // Reported once, as a folder, not also as a case without sections.
+  EXPECT_EQ(r.err.find("required section"), std::string::npos) << r.err;
+}
+
+TEST(CommandLineErrors, ASpeedOfTheWrongTypeIsNotAlsoReportedMissing) {
+  const std::string path = testing::UniqueTempPath("string_speed.toml");
+  std::ofstream(path) << "[gear]\nmodule_m = 0.002\nface_width_m = 0.025\n"
+                         "[gear.pinion]\nteeth = 35\n[gear.wheel]\nteeth = 105\n"
+                         "[operating]\npinion_speed_rpm = \"1000 rpm\"\npower_w = 10000.0\n"
+                         "[lubricant]\nname = \"sae40\"\n";
+  const testing::RunResult r = testing::RunTehl("case --check '" + path + "'");
+  std::remove(path.c_str());
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("wrong type"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("missing"), std::string::npos) << r.err;
+}
+
+// A gear run whose first step cannot converge (one Newton iteration allowed) stops with exit
+// code 1, and its cycle CSV marks that row converged = 0.
+TEST(CommandLineErrors, AStoppedRunMarksItsUnconvergedRowInTheCycleCsv) {
+  const std::string dir = testing::UniqueTempPath("stopped_run");
+  const std::string path = dir + "/stopped.toml";
+  fs::create_directories(dir);
+  std::ofstream(path) << "[gear]\nmodule_m = 0.002\nface_width_m = 0.025\n"
+                         "[gear.pinion]\nteeth = 35\n[gear.wheel]\nteeth = 105\n"
+                         "[operating]\npinion_speed_rpm = 1000.0\npower_w = 10000.0\n"
+                         "[lubricant]\nname = \"sae40\"\n"
+                         "[numerics]\ngrid_points = 65\nsteps = 4\nmax_newton_iterations = 1\n";
+  const testing::RunResult r = testing::RunTehl("run -q '" + path + "' -o '" + dir + "'");
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  std::ifstream csv(dir + "/stopped_cycle.csv");
+  ASSERT_TRUE(csv.good()) << r.err;
+  std::string header, row, last;
+  std::getline(csv, header);
+  while (std::getline(csv, row))
+    if (!row.empty()) last = row;
+  fs::remove_all(dir);
+  ASSERT_GE(header.size(), 10u);
+  EXPECT_EQ(header.substr(header.size() - 10), ",converged") << header;
+  ASSERT_FALSE(last.empty());
+  const double flag = std::stod(last.substr(last.rfind(',') + 1));
+  EXPECT_EQ(flag, 0.0) << last;
+}
+
+}  // namespace
+}  // namespace tehl
