@@ -234,6 +234,130 @@ mutation("unit_center_distance_mm")(wrong(F, "gear", "center_distance_m", "91.5"
 # valid 20 m disc: large bearing races are metres in radius, so no upper bound separates a
 # slip from a real contact.
 
+
+# --- Truncated files ----------------------------------------------------------------------
+def truncated(base, section, key, keep, what):
+    """Cuts the file after the first `keep` characters of a line (no newline at the end)."""
+    def f():
+        c = Case(base)
+        i = c.key(section, key) if key else c.section(section)
+        c.lines = c.lines[:i + 1]
+        c.lines[i] = c.lines[i][:keep]
+        c.no_final_newline = True
+        return c, "(syntax)", line_of(i), what
+    return f
+
+
+mutation("truncated_in_string")(truncated(G, "lubricant", "name", len('name = "sa'),
+                                          "cut inside the lubricant name string"))
+mutation("truncated_after_equals")(truncated(F, "gear", "module_m", len("module_m ="),
+                                             "cut right after the = of module_m"))
+mutation("truncated_in_header")(truncated(G, "gear.wheel", None, len("[gear.wh"),
+                                          "cut inside the [gear.wheel] header"))
+mutation("truncated_in_key")(truncated(D, "contact", "load_n_per_m", len("load_n_p"),
+                                       "cut inside the key load_n_per_m"))
+
+
+# --- Binary garbage -----------------------------------------------------------------------
+def garbage(base, section, key, seed, nul, what):
+    """Replaces the value of a line with random bytes (fixed seed); with or without NUL."""
+    def f():
+        c = Case(base)
+        i = c.key(section, key)
+        rng = random.Random(seed)
+        data = bytes(rng.randrange(1, 256) for _ in range(12))
+        if nul:
+            data = data[:5] + b"\x00" + data[6:]
+        else:
+            # Bytes that cannot start a TOML value (no quote, digit, sign, bracket, letter).
+            data = bytes(b if b >= 0x80 else 0x80 | b for b in data)
+        c.raw = {i: key.encode() + b" = " + data}
+        return c, "(file)" if nul else "(syntax)", line_of(i), what
+    return f
+
+
+mutation("binary_nul_in_value")(garbage(G, "gear", "face_width_m", 4004, True,
+                                        "random bytes with a NUL written as a value"))
+mutation("binary_high_bytes")(garbage(D, "contact", "speed_2_m_s", 2024, False,
+                                      "random non-ASCII bytes written as a value"))
+
+
+# --- Duplicates ---------------------------------------------------------------------------
+@mutation("duplicate_teeth")
+def _():
+    c = Case(G)
+    i = c.add("gear.pinion", "teeth", "36")
+    return c, "(syntax)", line_of(i), "teeth given twice in [gear.pinion]"
+
+
+@mutation("duplicate_lubricant_name")
+def _():
+    c = Case(D)
+    i = c.add("lubricant", "name", '"sae90"')
+    return c, "(syntax)", line_of(i), "the lubricant name given twice"
+
+
+@mutation("duplicate_operating_section")
+def _():
+    c = Case(F)
+    c.lines += ["[operating]", "pinion_speed_rpm = 1000.0"]
+    return c, "(syntax)", line_of(len(c.lines) - 2), "the table [operating] defined twice"
+
+
+@mutation("duplicate_gear_section")
+def _():
+    c = Case(A)
+    c.lines += ["[gear]", "module_m = 0.003"]
+    return c, "(syntax)", line_of(len(c.lines) - 2), "the table [gear] defined twice"
+
+
+# --- Impossible gear pairs ----------------------------------------------------------------
+@mutation("gear_undercut_pinion")
+def _():
+    c = Case(G)
+    c.set("gear.pinion", "teeth", "10")
+    return c, "gear.pinion.profile_shift", line_of(c.section("gear.pinion")), \
+        "10 teeth without profile shift: undercut (reported at [gear.pinion])"
+
+
+@mutation("gear_center_distance_too_small")
+def _():
+    c = Case(F)
+    return c, "gear.center_distance_m", line_of(c.set("gear", "center_distance_m", "0.08")), \
+        "centre distance 80 mm below the sum of the base radii (~84.6 mm)"
+
+
+@mutation("gear_teeth_overlap")
+def _():
+    c = Case(F)
+    return c, "gear.center_distance_m", line_of(c.set("gear", "center_distance_m", "0.0905")), \
+        "centre distance 90.5 mm, below the zero-backlash distance of the shifts: teeth overlap"
+
+
+@mutation("gear_pointed_tip")
+def _():
+    c = Case(F)
+    return c, "gear.pinion.tip_radius_m", line_of(c.set("gear.pinion", "tip_radius_m", "0.047")), \
+        "pinion tip radius 47 mm, beyond where its flanks meet: pointed tooth"
+
+
+@mutation("gear_tip_inside_base")
+def _():
+    c = Case(F)
+    return c, "gear.wheel.tip_radius_m", line_of(c.set("gear.wheel", "tip_radius_m", "0.05")), \
+        "wheel tip radius 50 mm inside its base circle (50.7 mm)"
+
+
+@mutation("gear_contact_ratio_below_one")
+def _():
+    c = Case(G)
+    c.add("gear", "addendum_coefficient", "0.5")
+    return c, "gear.pressure_angle_deg", line_of(c.key("gear", "pressure_angle_deg")), \
+        "half-height teeth (addendum 0.5 m): the contact ratio drops below 1 (reported at " \
+        "the drive pressure angle)"
+
+
+# --- Writing ------------------------------------------------------------------------------
 def render(name, f):
     c, key, line, what = f()
     header = f"# ERROR {key} at line {'-' if line is None else line}: {what} " \
