@@ -218,7 +218,7 @@ Command AddGearCommand(CLI::App& app) {
   sub->add_option("CASE", args->case_file, "Case file with [gear] and [operating]")->required();
   sub->add_option("--csv", args->csv,
                   "Write the along-path table (s, t, rho1, rho2, R, u1, u2, um, SRR, sliding, "
-                  "k_pair, k_mesh, share, w; SI units in the header)");
+                  "k_pair, k_mesh, share, w, r1, r2, pairs in contact; SI units in the header)");
   sub->add_option("--profile", args->profile, "Write tooth profile points (gear, flank, x_m, y_m)");
   sub->add_option("--points", args->points, "Samples from A to E in --csv (>= 2)")
       ->check(CLI::Range(2, 1000000));
