@@ -63,10 +63,16 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   doc.ThrowIfProblems();
 
   const double r = in.ReducedRadius();
-  const double w_max = *std::max_element(in.w.begin(), in.w.end());
-  const HertzScales hz = LineContactHertz(w_max, r, in.e_prime);
-  const UniformGrid grid =
-      UniformGrid::AroundHertz(hz.half_width_m, film.grid_points, film.x_start_b, film.x_end_b);
+  // The grid's units: the largest Hertz half-width over the tables (elastic solids) or the
+  // longest rigid inlet scale (internal::GridUnitsFor).
+  internal::GridUnits units;
+  for (size_t i = 0; i < in.w.size(); ++i) {
+    const double b = LineContactHertz(in.w[i], r, in.e_prime).half_width_m;
+    const double um = 0.5 * (in.u1[std::min(i, in.u1.size() - 1)] +
+                             in.u2[std::min(i, in.u2.size() - 1)]);
+    units = units.Max(internal::GridUnitsFor(film, b, r, um, in.w[i]));
+  }
+  const UniformGrid grid = units.Grid(film);
   LineContactSolver solver(grid, in.e_prime, *film.lubricant, film.effects, film.options,
                            film.surface1, film.surface2, film.solids);
   auto conditions = [&](double t) {

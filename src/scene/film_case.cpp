@@ -1,5 +1,6 @@
 #include "scene/film_case.hpp"
 
+#include <cmath>
 #include <filesystem>
 
 #include "scene/case_reader.hpp"
@@ -34,6 +35,15 @@ std::shared_ptr<const SurfaceShape> ReadSurface(Document& doc, const std::string
 }
 
 }  // namespace
+
+GridUnits GridUnitsFor(const FilmCase& film, double b_m, double r_m, double um_m_s,
+                       double w_n_per_m) {
+  if (film.effects.elastic || !film.lubricant) return {b_m, b_m};
+  const double eta0 = film.lubricant->viscosity().Evaluate(0.0, film.inlet_temperature_k).eta_pa_s;
+  const double h0 = 4.896 * eta0 * um_m_s * r_m / w_n_per_m;  // Martin [m]
+  const double l = std::sqrt(2.0 * r_m * h0);
+  return {kRigidInletUnit * l, kRigidOutletUnit * l};
+}
 
 FilmCase ReadFilmCase(Document& doc) {
   FilmCase f;

@@ -3,11 +3,13 @@
 // mesh cycle. Private to src/.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <string>
 
 #include "base/schema.hpp"
 #include "tehl/ehl/film_effects.hpp"
+#include "tehl/ehl/grid.hpp"
 #include "tehl/ehl/line_contact_solver.hpp"
 #include "tehl/ehl/surface_roughness.hpp"
 #include "tehl/lubricant/lubricant.hpp"
@@ -20,10 +22,31 @@ struct FilmCase {
   FilmEffects effects;
   LineContactSolver::Options options;
   int grid_points = 513;                          // [-]
-  double x_start_b = -4.5, x_end_b = 1.5;         // grid ends in Hertz half-widths [-]
+  double x_start_b = -4.5, x_end_b = 1.5;         // grid ends in GridUnits lengths [-]
   std::shared_ptr<const SurfaceShape> surface1, surface2;  // null = smooth
   ContactSolids solids;                           // thermal properties of the two bodies
 };
+
+// The lengths [numerics] x_start_b (inlet) and x_end_b (outlet) are measured in, for a contact
+// of reduced radius R, entrainment speed um and load w whose Hertz half-width is b [m].
+// Elastic solids: b for both. Rigid solids (effects.elastic = false) form no Hertz zone; their
+// film builds up over the Martin length l = sqrt(2 R h0), h0 = 4.896 eta0 um R / w
+// (VALIDATION.md section 2): the default inlet (-4.5) then lies 40 l upstream, where Martin's
+// load integral is within 0.1 % of its limit, and the default outlet (1.5) 2 l downstream,
+// beyond the film rupture at 0.475 l.
+struct GridUnits {
+  double inlet_m = 0, outlet_m = 0;
+  GridUnits Max(const GridUnits& o) const {
+    return {std::max(inlet_m, o.inlet_m), std::max(outlet_m, o.outlet_m)};
+  }
+  UniformGrid Grid(const FilmCase& film) const {
+    return UniformGrid(film.x_start_b * inlet_m, film.x_end_b * outlet_m, film.grid_points);
+  }
+};
+inline constexpr double kRigidInletUnit = 40.0 / 4.5;   // inlet unit / l [-]
+inline constexpr double kRigidOutletUnit = 2.0 / 1.5;   // outlet unit / l [-]
+GridUnits GridUnitsFor(const FilmCase& film, double b_m, double r_m, double um_m_s,
+                       double w_n_per_m);
 
 // Reads [lubricant], [effects], [numerics] and [surfaces]; problems go into `doc`.
 // Effects this version cannot simulate yet are problems at their key, never ignored.

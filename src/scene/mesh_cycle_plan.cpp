@@ -54,6 +54,7 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
   // b_max and the entrainment transits over a fine sampling of the path (both sides of B, D).
   const int samples = 400;
   double transits = 0;
+  GridUnits units;  // b_max, or the longest rigid inlet scale (GridUnitsFor)
   for (int i = 0; i <= samples; ++i) {
     const double s = g * i / samples;
     for (bool left : {true, false}) {
@@ -61,11 +62,12 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
       const double b =
           LineContactHertz(st.load_n_per_m, st.contact.reduced_radius_m, e_prime_pa).half_width_m;
       plan.max_half_width_m = std::max(plan.max_half_width_m, b);
+      units = units.Max(GridUnitsFor(film, b, st.contact.reduced_radius_m, st.contact.um_m_s,
+                                     st.load_n_per_m));
       if (left && i > 0) transits += st.contact.um_m_s / b * (path.duration_s() / samples);
     }
   }
-  plan.grid = UniformGrid::AroundHertz(plan.max_half_width_m, film.grid_points, film.x_start_b,
-                                       film.x_end_b);
+  plan.grid = units.Grid(film);
   const UniformGrid& grid = plan.grid;
 
   // Step count: the user's, or automatic; with roughness at least dt <= dx/um per segment.

@@ -39,7 +39,7 @@ std::vector<double> SegmentEnds(double g, double sb, double sd);
 
 struct MeshCyclePlan {
   double max_half_width_m = 0;  // b_max over the path [m]
-  UniformGrid grid;             // x_start_b b_max .. x_end_b b_max
+  UniformGrid grid;             // x_start_b .. x_end_b in GridUnitsFor lengths
   std::vector<double> s_steps;  // step positions from A (0) to E (g_alpha) [m]
   std::string step_rule;        // how the step count was chosen, for the run's report
 };

@@ -120,6 +120,42 @@ TEST(ContactScene, SteadyDiscCaseConvergesAndWritesItsFiles) {
   EXPECT_EQ(rows, 513);
 }
 
+// Rigid, isoviscous, incompressible discs (effects elastic, piezoviscous, compressible off):
+// the case's default grid is sized on the Martin length l = sqrt(2 R h0), not on the Hertz
+// half-width (b = 34 um here, 0.3 l: an inlet at -4.5 b would starve the film by 44 %). The
+// film is Martin's, h0 = 4.896 eta0 um R / w (VALIDATION.md section 2, tolerance 0.5 %), and
+// it ruptures at x = 0.4751 l.
+TEST(ContactScene, ARigidCaseGetsAGridOnTheMartinLengthAndMartinsFilm) {
+  const fs::path dir = TempDir("rigid");
+  const fs::path path = dir / "rigid.toml";
+  std::ofstream(path) << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nspeed_1_m_s = 1.0\n"
+                         "speed_2_m_s = 1.0\nload_n_per_m = 1.0e4\n[lubricant]\nname = \"sae40\"\n"
+                         "inlet_temperature_k = 313.15\n[effects]\ntransient = false\n"
+                         "elastic = false\npiezoviscous = false\ncompressible = false\n"
+                         "[numerics]\ngrid_points = 1025\n";
+  ContactRunOptions o;
+  o.quiet = true;
+  o.output_dir = dir.string();
+  const ContactRunResult r = RunContactCase(path.string(), o);
+  ASSERT_TRUE(r.converged());
+  const double eta0 = 0.1140574;  // SAE 40 at 313.15 K (seed 004 Table 2)
+  const double radius = 0.01, um = 1.0, w = 1.0e4;
+  const double h0 = 4.896 * eta0 * um * radius / w;
+  const double l = std::sqrt(2 * radius * h0);
+  EXPECT_NEAR(r.steps[0].h_min_m / h0, 1.0, 0.005);
+  // The grid: the inlet 40 l upstream (x_start_b -4.5), the outlet 2 l downstream (1.5); the
+  // pressure ends (film rupture) at 0.4751 l, within two cells.
+  const Csv profile = ReadCsv(r.profile_csv);
+  ASSERT_EQ(profile.rows.size(), 1025u);
+  EXPECT_NEAR(profile.At(0, "x_m") / l, -40.0, 1e-6);  // CSV: 10 significant digits
+  EXPECT_NEAR(profile.At(1024, "x_m") / l, 2.0, 1e-6);
+  const double dx = (profile.At(1, "x_m") - profile.At(0, "x_m")) / l;
+  double rupture = 0;
+  for (size_t i = 0; i < profile.rows.size(); ++i)
+    if (profile.At(i, "p_pa") > 0) rupture = profile.At(i, "x_m") / l;
+  EXPECT_NEAR(rupture, 0.4751, 2 * dx);
+}
+
 TEST(ContactScene, LoadDoublingConvergesAtEveryStepAndThinsTheFilm) {
   ContactRunOptions o;
   o.quiet = true;
