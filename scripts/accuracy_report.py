@@ -44,19 +44,28 @@ QUANTITIES = [("h_min", "h_min"), ("h_c", "h_c"), ("p_max", "p_max"), ("T_max", 
 CYCLE_BASE = {"effects.thermal": "true", "effects.non_newtonian": "true",
               "numerics.grid_points": "257",
               "numerics.film_nodes": "11", "numerics.steps": "80",
-              "numerics.newton_tolerance": "1e-8"}
+              "numerics.newton_tolerance": "1e-8", "numerics.x_start_b": "-4.5"}
 DISC_BASE = {"contact.speed_1_m_s": "1.2", "contact.speed_2_m_s": "0.8",
              "effects.thermal": "true", "effects.non_newtonian": "true",
              "numerics.grid_points": "257", "numerics.film_nodes": "11",
-             "numerics.newton_tolerance": "1e-8"}
+             "numerics.newton_tolerance": "1e-8", "numerics.x_start_b": "-4.5"}
+# The inlet end of the grid, with grid_points raised with the domain so that the node spacing
+# stays that of the base (6 b / 256) and x = 0 stays a node: the error of a truncated inlet
+# alone, and its cost.
+INLET = ("inlet", "numerics.x_start_b", ["-3", "-4.5", "-6", "-8", "-12", "-16"],
+         {"-3": {"numerics.grid_points": "193"}, "-6": {"numerics.grid_points": "321"},
+          "-8": {"numerics.grid_points": "419"}, "-12": {"numerics.grid_points": "577"},
+          "-16": {"numerics.grid_points": "771"}})
 SERIES = {
     "cycle": [("N", "numerics.grid_points", ["129", "257", "513", "1025"]),
               ("Nz", "numerics.film_nodes", ["5", "7", "11", "21"]),
               ("steps", "numerics.steps", ["40", "80", "150", "300"]),
-              ("tol", "numerics.newton_tolerance", ["1e-4", "1e-6", "1e-8", "1e-10"])],
+              ("tol", "numerics.newton_tolerance", ["1e-4", "1e-6", "1e-8", "1e-10"]),
+              INLET],
     "disc": [("N", "numerics.grid_points", ["129", "257", "513", "1025"]),
              ("Nz", "numerics.film_nodes", ["5", "7", "11", "21"]),
-             ("tol", "numerics.newton_tolerance", ["1e-4", "1e-6", "1e-8", "1e-10"])],
+             ("tol", "numerics.newton_tolerance", ["1e-4", "1e-6", "1e-8", "1e-10"]),
+             INLET],
 }
 EFFECT_BASE = {"effects.thermal": "true", "numerics.grid_points": "129",
                "numerics.steps": "80"}
@@ -217,7 +226,7 @@ def reference(rows):
 
 def series_tables(case_name, rows_by_series):
     out = []
-    for label, key, values in SERIES[case_name]:
+    for label, key, values, *_ in SERIES[case_name]:
         rows = rows_by_series[label]
         ref = reference(rows)
         base_cpu = next((r["cpu_s"] for r in rows if r["is_base"]), None)
@@ -253,7 +262,7 @@ def cheapest(case_name, rows_by_series, q, target):
     errors of its settings, each against the reference of its series, and its CPU time is the
     base CPU time times the product of the settings' CPU / base. Only converged runs count."""
     options = []
-    for label, _, values in SERIES[case_name]:
+    for label, _, values, *_ in SERIES[case_name]:
         rows = rows_by_series[label]
         ref = reference(rows)
         base = next((r for r in rows if r["is_base"]), None)
@@ -279,7 +288,7 @@ def combinations(case_name, rows_by_series):
     """(estimated CPU time, estimated largest error over the quantities) of every combination
     of one setting per series, with the additive error model of cheapest()."""
     options = []
-    for label, _, values in SERIES[case_name]:
+    for label, _, values, *_ in SERIES[case_name]:
         rows = rows_by_series[label]
         ref = reference(rows)
         base = next((r for r in rows if r["is_base"]), None)
@@ -308,7 +317,7 @@ def combinations(case_name, rows_by_series):
 
 def pareto_plot(data, path):
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
-    markers = {"N": "o", "Nz": "s", "steps": "^", "tol": "D"}
+    markers = {"N": "o", "Nz": "s", "steps": "^", "tol": "D", "inlet": "v"}
     for ax, case_name in zip(axes, ["cycle", "disc"]):
         combos = sorted(combinations(case_name, data[case_name]))
         if combos:
@@ -321,7 +330,7 @@ def pareto_plot(data, path):
                     best = y
             ax.step([p[0] for p in front], [p[1] for p in front], "k-", lw=1.0, where="post",
                     label="Pareto front of the combinations")
-        for label, _, values in SERIES[case_name]:
+        for label, _, values, *_ in SERIES[case_name]:
             rows = data[case_name][label]
             ref = reference(rows)
             xs, ys = [], []
@@ -373,10 +382,11 @@ def main():
     for case_name, base_case, base in [("cycle", "cases/seed004_sae40.toml", CYCLE_BASE),
                                        ("disc", "cases/disc_steady.toml", DISC_BASE)]:
         scenes, meta = [], []
-        for label, key, values in SERIES[case_name]:
+        for label, key, values, *extra in SERIES[case_name]:
             for v in values:
-                scenes.append(dict(base, **{key: v}))
-                meta.append((case_name, label, v, v == base[key]))
+                more = extra[0].get(v, {}) if extra else {}
+                scenes.append(dict(base, **{key: v}, **more))
+                meta.append((case_name, label, v, v == base[key] and not more))
         files = expand(tehl, f"{case_name}_settings", os.path.join(ROOT, base_case), scenes,
                        scratch)
         plan += [m + (f,) for m, f in zip(meta, files)]
@@ -457,6 +467,13 @@ def write_markdown(a, data, effects, elapsed, load_before, load_after):
               "estimate below each table says how far that reference itself is from the grid "
               "limit. The thermal coupling tolerance (0.01 K) has no case key and is not "
               "varied.")
+    md.append("- **inlet**: `numerics.x_start_b` from -3 to -16 (Hertz half-widths b of the "
+              "largest contact; the default is -4.5) with `grid_points` raised with the "
+              "domain (193, 257, 321, 419, 577 and 771 nodes), so that the node spacing stays "
+              "that of the base and the error is that of the truncated inlet alone. In a "
+              "recommendation below, 'inlet = -8' with 'N = 513' means `x_start_b = -8` and "
+              "`grid_points` about 513 (1.5 + 8) / 6, the spacing of 513 nodes on the default "
+              "domain.")
     md.append("- Why the Ree-Eyring film: it is the film model of the shipped studies, and "
               "the Newtonian thermal film does not converge on the sliding disc (SRR >= 0.2; "
               "docs/thermal.md, 'Open points'), so the disc series could not use it. The "
