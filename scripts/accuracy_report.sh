@@ -5,7 +5,7 @@
 #   scripts/accuracy_report.sh [--reuse]
 #
 # Environment: TEHL (default build/tehl), JOBS (runs at once, default 2), SCRATCH (default
-# results/accuracy). About 3 minutes on the 2-core machine (29 runs, 2 at a time). Needs /usr/bin/python3
+# results/accuracy). About 1 minute on the 2-core machine (39 runs, 2 at a time). Needs /usr/bin/python3
 # with matplotlib and h5py (Debian packages).
 set -euo pipefail
 cd "$(dirname "$0")/.."
