@@ -23,6 +23,7 @@ struct MoesPoint {
   double radius_m = 0.01;       // R [m]
   double eta0_pa_s = 0.04;      // [Pa s]
   double z = 0.68;              // Roelands pressure index [-]
+  double x_start_b = -4.5;      // inlet end of the grid in Hertz half-widths [-]
 
   // VALIDATION.md section 1: alpha = Z (ln eta0 + 9.67)/p0, p0 = 1.96e8 Pa [1/Pa].
   double alpha() const { return z * (std::log(eta0_pa_s) + 9.67) / 1.96e8; }
@@ -46,8 +47,10 @@ struct MoesPoint {
     return ContactConditions{radius_m, um_m_s(), um_m_s(), load_factor * load_n_per_m(),
                              kReferenceT0};
   }
-  // DESIGN.md section 5: -4.5 b .. 1.5 b.
-  UniformGrid Grid(int n) const { return UniformGrid::AroundHertz(Hertz().half_width_m, n); }
+  // DESIGN.md section 5: -4.5 b .. 1.5 b (x_start_b b .. 1.5 b).
+  UniformGrid Grid(int n) const {
+    return UniformGrid::AroundHertz(Hertz().half_width_m, n, x_start_b, 1.5);
+  }
 };
 
 // Everything a steady or transient film solve at a Moes point needs, kept alive together
