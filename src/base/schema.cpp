@@ -180,6 +180,12 @@ TooDeep FindTooDeep(const std::string& s) {
 
 }  // namespace
 
+std::string FormatShort(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
 std::string FormatReal(double x) {
   if (std::isnan(x)) return "nan";
   if (std::isinf(x)) return x > 0 ? "inf" : "-inf";

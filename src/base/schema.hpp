@@ -128,6 +128,7 @@ class Document {
 };
 
 std::string FormatReal(double x);     // shortest round-trip, valid TOML float
+std::string FormatShort(double x);    // 3 significant digits ("%.3g"), for messages
 std::string FormatValue(const Value& v);
 
 }  // namespace tehl::internal

@@ -3,19 +3,10 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "base/schema.hpp"
 #include "ehl/gmres.hpp"
-#include <cstdio>
 
 namespace tehl::internal {
-namespace {
-
-std::string Real(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
-
-}  // namespace
 
 FixedPointNewtonResult SolveFixedPoint(const FixedPointMap& map,
                                        const FixedPointNewtonOptions& o,
@@ -43,7 +34,7 @@ FixedPointNewtonResult SolveFixedPoint(const FixedPointMap& map,
         r.map_evaluations >= o.max_map_evaluations) {
       r.message = "no convergence in " + std::to_string(r.newton_iterations) +
                   " Newton steps and " + std::to_string(r.map_evaluations) +
-                  " evaluations of the map (max |G(x) - x| = " + Real(r.residual) + ")";
+                  " evaluations of the map (max |G(x) - x| = " + FormatShort(r.residual) + ")";
       break;
     }
     ++r.newton_iterations;
@@ -112,7 +103,7 @@ FixedPointNewtonResult SolveFixedPoint(const FixedPointMap& map,
     }
     if (!accepted) {
       r.message = "the line search found no decrease of |G(x) - x| (GMRES relative residual " +
-                  Real(lin.relative_residual) + ")";
+                  FormatShort(lin.relative_residual) + ")";
       break;
     }
     r.residual = f.cwiseAbs().maxCoeff();
@@ -125,8 +116,8 @@ FixedPointNewtonResult SolveFixedPoint(const FixedPointMap& map,
     if (stalled >= o.stall_steps) {
       r.message = "stalled: " + std::to_string(stalled) +
                   " Newton steps in a row lowered |G(x) - x| by less than " +
-                  Real(100 * o.stall_decrease) + " % each (max |G(x) - x| = " +
-                  Real(r.residual) + ")";
+                  FormatShort(100 * o.stall_decrease) + " % each (max |G(x) - x| = " +
+                  FormatShort(r.residual) + ")";
       break;
     }
   }

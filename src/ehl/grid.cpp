@@ -41,7 +41,9 @@ int UniformGrid::NearestNode(double x_m) const {
 std::string FilmEffects::ToString() const {
   std::string s;
   auto add = [&](bool on, const char* name) {
-    if (on) s += (s.empty() ? "" : " ") + std::string(name);
+    if (!on) return;
+    if (!s.empty()) s += ' ';
+    s += name;
   };
   add(elastic, "elastic");
   add(piezoviscous, "piezoviscous");

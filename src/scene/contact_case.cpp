@@ -1,21 +1,11 @@
 #include "scene/contact_case.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <string>
 
 #include "tehl/units.hpp"
 
 namespace tehl::internal {
-namespace {
-
-std::string Short(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", x);
-  return text;
-}
-
-}  // namespace
 
 ContactInputs ReadContact(Document& doc) {
   ContactInputs in;
@@ -64,12 +54,12 @@ ContactInputs ReadContact(Document& doc) {
     if (wi > w_limit) {
       const HertzScales hz = LineContactHertz(wi, in.ReducedRadius(), in.e_prime);
       doc.Problem("contact", load_key,
-                  "a load of " + Short(wi) + " N/m gives a Hertz half-width b = " +
-                      Short(hz.half_width_m) + " m against R = " +
-                      Short(in.ReducedRadius()) + " m (p_H = " +
-                      Short(hz.max_pressure_pa) + " Pa, E' = " + Short(in.e_prime) +
+                  "a load of " + FormatShort(wi) + " N/m gives a Hertz half-width b = " +
+                      FormatShort(hz.half_width_m) + " m against R = " +
+                      FormatShort(in.ReducedRadius()) + " m (p_H = " +
+                      FormatShort(hz.max_pressure_pa) + " Pa, E' = " + FormatShort(in.e_prime) +
                       " Pa): Hertz line-contact theory needs b << R",
-                  "loads <= " + Short(w_limit) + " N/m (b <= 0.2 R) for these bodies");
+                  "loads <= " + FormatShort(w_limit) + " N/m (b <= 0.2 R) for these bodies");
       break;
     }
   return in;

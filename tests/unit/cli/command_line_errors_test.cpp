@@ -21,6 +21,15 @@ std::string SourcePath(const std::string& relative) {
   return std::string(TEHL_SOURCE_DIR) + "/" + relative;
 }
 
+// The seed 004 pair (35/105 teeth, m = 2 mm, SAE 40) with the given [operating] speed line and
+// extra sections.
+std::string GearCase(const std::string& speed_line, const std::string& extra = "") {
+  return "[gear]\nmodule_m = 0.002\nface_width_m = 0.025\n"
+         "[gear.pinion]\nteeth = 35\n[gear.wheel]\nteeth = 105\n"
+         "[operating]\n" + speed_line + "\npower_w = 10000.0\n"
+         "[lubricant]\nname = \"sae40\"\n" + extra;
+}
+
 TEST(CommandLineErrors, AMistypedCommandIsNamedWithTheAllowedOnes) {
   const testing::RunResult r = testing::RunTehl("rn cases/disc_steady.toml");
   ASSERT_TRUE(r.exited);
@@ -56,10 +65,7 @@ TEST(CommandLineErrors, AFolderGivenAsTheCaseFileIsNamedAsAFolder) {
 
 TEST(CommandLineErrors, ASpeedOfTheWrongTypeIsNotAlsoReportedMissing) {
   const std::string path = testing::UniqueTempPath("string_speed.toml");
-  std::ofstream(path) << "[gear]\nmodule_m = 0.002\nface_width_m = 0.025\n"
-                         "[gear.pinion]\nteeth = 35\n[gear.wheel]\nteeth = 105\n"
-                         "[operating]\npinion_speed_rpm = \"1000 rpm\"\npower_w = 10000.0\n"
-                         "[lubricant]\nname = \"sae40\"\n";
+  std::ofstream(path) << GearCase("pinion_speed_rpm = \"1000 rpm\"");
   const testing::RunResult r = testing::RunTehl("case --check '" + path + "'");
   std::remove(path.c_str());
   ASSERT_TRUE(r.exited);
@@ -74,11 +80,9 @@ TEST(CommandLineErrors, AStoppedRunMarksItsUnconvergedRowInTheCycleCsv) {
   const std::string dir = testing::UniqueTempPath("stopped_run");
   const std::string path = dir + "/stopped.toml";
   fs::create_directories(dir);
-  std::ofstream(path) << "[gear]\nmodule_m = 0.002\nface_width_m = 0.025\n"
-                         "[gear.pinion]\nteeth = 35\n[gear.wheel]\nteeth = 105\n"
-                         "[operating]\npinion_speed_rpm = 1000.0\npower_w = 10000.0\n"
-                         "[lubricant]\nname = \"sae40\"\n"
-                         "[numerics]\ngrid_points = 65\nsteps = 4\nmax_newton_iterations = 1\n";
+  std::ofstream(path) << GearCase("pinion_speed_rpm = 1000.0",
+                                  "[numerics]\ngrid_points = 65\nsteps = 4\n"
+                                  "max_newton_iterations = 1\n");
   const testing::RunResult r = testing::RunTehl("run -q '" + path + "' -o '" + dir + "'");
   ASSERT_TRUE(r.exited);
   EXPECT_EQ(r.exit_code, 1) << r.err;
