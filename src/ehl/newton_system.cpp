@@ -1,5 +1,7 @@
 #include "ehl/newton_system.hpp"
 
+#include <algorithm>
+
 #include <Eigen/LU>
 
 #include "tehl/ehl/elastic_deflection.hpp"
@@ -49,6 +51,10 @@ Eigen::MatrixXd NewtonSystem::Dense() const {
     kcoef.resize(n);
     for (int k = 0; k < n; ++k) kcoef[k] = elastic->Coefficient(k);
   }
+  // Each row's elastic part is summed in a contiguous buffer (column c - 1 holds unknown c)
+  // and written to the column-major matrix once: four strided passes per row cost more than
+  // the arithmetic.
+  Eigen::RowVectorXd acc(m);
   for (int i = 1; i <= m; ++i) {
     const int row = i - 1;
     if (cavitated[i]) {
@@ -57,16 +63,26 @@ Eigen::MatrixXd NewtonSystem::Dense() const {
     }
     double bsum = 0.0;
     const double rs = (*row_scale)[i];
+    bool any = false;
+    if (elastic) acc.setZero();
     for (int c = 0; c < 4; ++c) {
       const int k = i - 2 + c;
       if (k < 0 || k >= n) continue;
       const double bk = (*b)(i, c);
       bsum += bk;
-      if (k >= 1 && k <= m) j(row, k - 1) += rs * p_ref * (*a)(i, c);
       if (elastic && bk != 0.0) {
+        // acc[col - 1] += f K(|k - col|), col = 1..m, split at col = k to drop the abs.
         const double f = rs * p_ref * bk;
-        for (int col = 1; col <= m; ++col) j(row, col - 1) += f * kcoef[std::abs(k - col)];
+        const int split = std::clamp(k, 1, m + 1);
+        for (int col = 1; col < split; ++col) acc[col - 1] += f * kcoef[k - col];
+        for (int col = split; col <= m; ++col) acc[col - 1] += f * kcoef[col - k];
+        any = true;
       }
+    }
+    if (any) j.row(row).head(m) = acc;
+    for (int c = 0; c < 4; ++c) {
+      const int k = i - 2 + c;
+      if (k >= 1 && k <= m) j(row, k - 1) += rs * p_ref * (*a)(i, c);
     }
     j(row, m) = rs * h_ref * bsum;
   }
