@@ -124,9 +124,10 @@ class LineContactSolver {
     double coupling_pressure_tolerance = 1e-4;  // non-Newtonian: max |p change| / p_max [-]
     int max_coupling_iterations = 40;      // [-]
     // A coupling still converging after max_coupling_iterations (its smallest change over
-    // the last 10 iterations at most half that over the 10 before: the temperature change
-    // in thermal runs, the pressure change otherwise) goes on, up to this many; not where
-    // Newton on the coupling takes over instead (Newtonian thermal runs) [-].
+    // the last 10 iterations below that over the 10 before, at a rate that reaches the
+    // tolerance within this many iterations: the temperature change in thermal runs, the
+    // pressure change otherwise) goes on, up to this many; not where Newton on the coupling
+    // takes over instead (Newtonian thermal runs) [-].
     int max_coupling_iterations_converging = 160;
     double thermal_relaxation = 0.8;       // T <- T + relaxation (T_energy - T) [-]
     // Newtonian thermal runs: when the alternation has not reduced its temperature change
