@@ -138,6 +138,11 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
   for (int i = 0; i < n_; ++i) {
     const double dxc = source_.CellLength(i);
     const double kappa = k_w_mk[i] * dxc / (f.h_m[i] * dxi_);  // conduction across the film
+    // Conduction along x through the west and east faces, per unit of dxi [W/(m K)].
+    const double kx_w = i > 0 ? 0.25 * (k_w_mk[i - 1] + k_w_mk[i]) * (f.h_m[i - 1] + f.h_m[i]) / dx_
+                              : 0.0;
+    const double kx_e =
+        i < n_ - 1 ? 0.25 * (k_w_mk[i + 1] + k_w_mk[i]) * (f.h_m[i + 1] + f.h_m[i]) / dx_ : 0.0;
     const double dpdt = f.dpdt_pa_s.size() ? f.dpdt_pa_s[i] : 0.0;
     const double dpdx = i == 0        ? (f.p_pa[1] - f.p_pa[0]) / dx_
                         : i == n_ - 1 ? (f.p_pa[n_ - 1] - f.p_pa[n_ - 2]) / dx_
@@ -154,6 +159,16 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
         ap -= cp * fe;
         if (i < n_ - 1) ae_(i, j) += cp * fe;
       }
+      // Conduction along x between neighbouring cells (none through the ends of the film).
+      // Small against the cross-film conduction wherever the film is thin (ratio (h dxi /
+      // dx)^2), it decides the temperature where the velocity changes sign: without it a
+      // node of the inlet's recirculation with u ~ 0 took its temperature from whichever
+      // neighbour was upwind, a jump of several kelvin when the sign flipped between coupling
+      // iterations (the Ree-Eyring disc at L_T 5, SRR 0.5 then swung by 3-7 K on 513 nodes).
+      const double dxi_j = (j == 0 || j == nz_ - 1) ? 0.5 * dxi_ : dxi_;
+      ap += (kx_w + kx_e) * dxi_j;
+      aw_(i, j) -= kx_w * dxi_j;
+      ae_(i, j) -= kx_e * dxi_j;
       // Cross-film faces: convection upwinded, conduction central.
       if (j > 0) {
         const double gs = gz_(i, j - 1);
@@ -212,14 +227,17 @@ bool FilmEnergySystem::HasFactorization() const { return klu_->numeric != nullpt
 
 bool FilmEnergySystem::Factorize(bool exact) {
   // The matrix to factorize: A itself, or A without the moving-heat-source history inside a
-  // recirculation zone (columns joined by reverse-flow faces). KLU's block-triangular form
-  // turns each zone into one diagonal block; the history (a dense triangle) would fill it,
-  // while without it the block is banded and cheap. Outside the zones the history is lower
-  // block-triangular and costs only forward substitution, so it stays.
+  // recirculation zone (columns joined by reverse-flow faces) and without the conduction
+  // along x from a column to the one upstream of it across a zone boundary. KLU's
+  // block-triangular form turns each zone into one diagonal block; the history (a dense
+  // triangle) would fill it, while without it the block is banded and cheap. Outside the
+  // zones the history is lower block-triangular and costs only forward substitution, so it
+  // stays; the upstream conduction, O(1/Peclet) of the convection, is left to the iteration
+  // (with walls of fixed temperature there is no history and A is banded: all of it stays).
   std::vector<int> zone(n_);
   for (int i = 0; i < n_; ++i) {
     bool reverse = false;
-    for (int j = 0; i > 0 && j < nz_; ++j) reverse = reverse || ae_(i - 1, j) != 0;
+    for (int j = 0; i > 0 && j < nz_; ++j) reverse = reverse || fx_(i, j) < 0;
     zone[i] = reverse ? zone[i - 1] : i;
   }
   fact_ptr_.assign(col_ptr_.size(), 0);
@@ -234,7 +252,8 @@ bool FilmEnergySystem::Factorize(bool exact) {
     const bool wall_column = c % block_ >= nz_;
     for (int e = col_ptr_[c]; e < col_ptr_[c + 1]; ++e) {
       const int ri = row_idx_[e] / block_;
-      if (!exact && wall_column && ri > ci && zone[ri] == zone[ci]) {
+      if (!exact && ((wall_column && ri > ci && zone[ri] == zone[ci]) ||
+                     (moving_walls_ && !wall_column && ri < ci && zone[ri] != zone[ci]))) {
         ++dropped;
         continue;
       }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <vector>
 
 #include "base/schema.hpp"
@@ -186,6 +187,33 @@ void FilmField::SetTemperature(const Eigen::MatrixXd& t_k) {
   t_.t_k = t_k;
   t_.t1_k = t_.t_k.col(0);
   t_.t2_k = t_.t_k.col(nz_ - 1);
+}
+
+Eigen::VectorXd FilmField::CouplingState() const {
+  const Eigen::Index m = t_.t_k.size();
+  Eigen::VectorXd x(eyring_ ? 2 * m : m);
+  x.head(m) = t_.t_k.reshaped();
+  if (eyring_) x.tail(m) = kLogFactorWeightK * factor_.array().log().reshaped();
+  return x;
+}
+
+void FilmField::SetCouplingState(const Eigen::VectorXd& x) {
+  const Eigen::Index n = t_.t_k.rows(), m = t_.t_k.size();
+  SetTemperature(x.head(m).reshaped(n, nz_));
+  if (eyring_)
+    factor_ = (x.tail(m) / kLogFactorWeightK).array().min(0.0).exp().reshaped(n, nz_);
+}
+
+void FilmField::CouplingBounds(double t0_k, Eigen::VectorXd* lower, Eigen::VectorXd* upper) const {
+  const Eigen::Index m = t_.t_k.size();
+  lower->resize(eyring_ ? 2 * m : m);
+  upper->resize(lower->size());
+  lower->head(m).setConstant(MinTemperature(t0_k));
+  upper->head(m).setConstant(MaxTemperature(t0_k));
+  if (eyring_) {
+    lower->tail(m).setConstant(-std::numeric_limits<double>::max());
+    upper->tail(m).setZero();
+  }
 }
 
 FilmField::EnergyUpdate FilmField::MapTemperature(const ContactConditions& c,

@@ -88,6 +88,12 @@ class FilmField {
                               Eigen::MatrixXd* image);
   // Sets the current film temperature (n x nz; columns 0 and nz-1 are the surfaces) [K].
   void SetTemperature(const Eigen::MatrixXd& t_k);
+  // The unknowns of the coupling as one vector: the film temperature [K], followed in
+  // Ree-Eyring runs by w log f (w = kLogFactorWeightK [K]), column-major n x nz each; and
+  // the bounds the coupling keeps them in at inlet temperature t0_k (log f <= 0).
+  Eigen::VectorXd CouplingState() const;
+  void SetCouplingState(const Eigen::VectorXd& x);
+  void CouplingBounds(double t0_k, Eigen::VectorXd* lower, Eigen::VectorXd* upper) const;
   const Eigen::MatrixXd& film_temperature() const { return t_.t_k; }
   // Lowest and highest film temperature the coupling accepts at inlet temperature t0_k [K].
   static double MinTemperature(double t0_k) { return 0.8 * t0_k; }

@@ -15,7 +15,13 @@ FixedPointNewtonResult SolveFixedPoint(const FixedPointMap& map,
   const Eigen::Index n = x->size();
   Eigen::VectorXd g(n), f(n), gt(n);
   bool at_x = false;  // the last evaluation of G was at *x
-  auto clamp = [&](Eigen::VectorXd* v) { *v = v->cwiseMax(o.lower).cwiseMin(o.upper); };
+  const Eigen::VectorXd lower = o.lower_bounds.size() == n
+                                    ? o.lower_bounds
+                                    : Eigen::VectorXd::Constant(n, o.lower).eval();
+  const Eigen::VectorXd upper = o.upper_bounds.size() == n
+                                    ? o.upper_bounds
+                                    : Eigen::VectorXd::Constant(n, o.upper).eval();
+  auto clamp = [&](Eigen::VectorXd* v) { *v = v->cwiseMax(lower).cwiseMin(upper); };
   auto eval = [&](const Eigen::VectorXd& at, Eigen::VectorXd* out) {
     ++r.map_evaluations;
     return map(at, out) && out->allFinite();
@@ -51,7 +57,7 @@ FixedPointNewtonResult SolveFixedPoint(const FixedPointMap& map,
       // A backward difference where the forward probe would leave [lower, upper].
       Eigen::VectorXd probe = base + scale * v;
       double sign = 1.0;
-      if ((probe.array() < o.lower).any() || (probe.array() > o.upper).any()) {
+      if ((probe.array() < lower.array()).any() || (probe.array() > upper.array()).any()) {
         probe = base - scale * v;
         sign = -1.0;
       }

@@ -35,8 +35,10 @@ struct FixedPointNewtonOptions {
   // The first step tried is at most this long in the max-norm (near a fold of the solution
   // curve G' has an eigenvalue close to 1 and the Newton step is far too long) [unit of x].
   double max_step = 50.0;
-  // Each iterate is clamped to [lower, upper] (the range where G is defined) [unit of x].
+  // Each iterate is clamped to [lower, upper] (the range where G is defined) [unit of x];
+  // per component where lower_bounds / upper_bounds have the size of x.
   double lower = -1e300, upper = 1e300;
+  Eigen::VectorXd lower_bounds, upper_bounds;
 };
 
 struct FixedPointNewtonResult {

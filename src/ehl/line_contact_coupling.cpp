@@ -81,36 +81,43 @@ LineContactSolver::Impl::CouplingNewton LineContactSolver::Impl::NewtonCoupling(
     double dt_s,
     FilmState* s) {
   CouplingNewton out;
-  const Eigen::MatrixXd start = field_->film_temperature();
-  const Eigen::Index rows = start.rows(), cols = start.cols();
+  const Eigen::Index m = field_->film_temperature().size();
+  const bool eyring = eff_.non_newtonian;
   FilmState work = *s;
   Eigen::MatrixXd image;
+  // G(x), x = (T[, w log f]): the pressure solved with the film at x; in Ree-Eyring runs the
+  // factor of that pressure at T (w log f') and the energy equation's temperature with it
+  // (T'): one alternation step without relaxation or mixing. The field is left at x.
   const internal::FixedPointMap map = [&](const Eigen::VectorXd& x, Eigen::VectorXd* g) {
-    field_->SetTemperature(Eigen::Map<const Eigen::MatrixXd>(x.data(), rows, cols));
+    field_->SetCouplingState(x);
     FilmState trial = work;
     const double keep_tolerance = opt_.tolerance;
     opt_.tolerance = std::min(opt_.tolerance, kCouplingMapPressureTolerance);
     out.pressure = Solve(c, td, &trial);
     opt_.tolerance = keep_tolerance;
     if (!out.pressure.usable()) return false;
+    if (eyring) field_->UpdateRheology(c, trial, 1.0);
     internal::FilmField::EnergyUpdate e;
     try {
       e = field_->MapTemperature(c, trial, previous, dt_s, kCouplingMapToleranceK, &image);
     } catch (const std::exception&) {
-      return false;
+      e.ok = false;
     }
+    if (e.ok) {
+      *g = field_->CouplingState();
+      g->head(m) = Eigen::Map<const Eigen::VectorXd>(image.data(), image.size());
+    }
+    field_->SetCouplingState(x);
     if (!e.ok) return false;
     out.balance = e.summary.balance.RelativeError();
     work = trial;
-    *g = Eigen::Map<const Eigen::VectorXd>(image.data(), image.size());
     return true;
   };
   internal::FixedPointNewtonOptions o;
   o.tolerance = opt_.thermal_tolerance_k;
   o.fd_step = kCouplingFdStepK;
-  o.lower = internal::FilmField::MinTemperature(c.temperature_k);
-  o.upper = internal::FilmField::MaxTemperature(c.temperature_k);
-  Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(start.data(), start.size());
+  field_->CouplingBounds(c.temperature_k, &o.lower_bounds, &o.upper_bounds);
+  Eigen::VectorXd x = field_->CouplingState();
   out.result = internal::SolveFixedPoint(map, o, &x);
   if (std::getenv("TEHL_DEBUG_COUPLING")) {
     std::fprintf(stderr, "coupling Newton: %s, %d steps, %d GMRES, %d maps, residual %g K:",
@@ -196,11 +203,16 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
   // Newton on the coupling (Newtonian thermal runs) takes over from the best iterate when
   // the alternation stalls: no new smallest temperature change for coupling_newton_after
   // iterations, or all iterations used.
+  // Ree-Eyring thermal runs keep the alternation (with its budget extension while it still
+  // converges) and take Newton on (T, w log f) only from the best iterate of an alternation
+  // that did not settle.
   const bool newton_run = eff_.thermal && !eff_.non_newtonian && opt_.coupling_newton_after > 0;
-  const bool newton_possible = newton && newton_run;
+  const bool newton_last =
+      eff_.thermal && eff_.non_newtonian && opt_.coupling_newton_after > 0;
+  const bool newton_possible = newton && (newton_run || newton_last);
   double best_change = std::numeric_limits<double>::infinity();
   int since_best = 0;
-  Eigen::MatrixXd best_t;
+  Eigen::VectorXd best_x;
   FilmState best_s;
   FilmState good_s;        // the last settled pressure ...
   Eigen::MatrixXd good_t;  // ... and its temperature
@@ -265,6 +277,7 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
     if (p_last.size() == s->p_pa.size())
       change_p = (s->p_pa - p_last).cwiseAbs().maxCoeff() / std::max(s->MaxPressure(), 1.0);
     p_last = s->p_pa;
+    const Eigen::VectorXd x_in = newton_possible ? field_->CouplingState() : Eigen::VectorXd();
     change_f = field_->UpdateRheology(
         c, *s, eff_.thermal ? 1.0 : internal::FilmField::kEyringRelaxation);
     change_t = 0.0;
@@ -273,7 +286,6 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
       // coupling that can only come from a diverging iterate, which is a failed solve, not
       // bad input.
       internal::FilmField::EnergyUpdate e;
-      const Eigen::MatrixXd t_in = field_->film_temperature();
       try {
         e = field_->UpdateTemperature(c, *s, previous, dt_s, opt_.thermal_relaxation);
       } catch (const std::exception& ex) {
@@ -285,10 +297,10 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
       if (newton_possible && e.ok && !e.limited) {
         if (change_t < best_change) {
           best_change = change_t;
-          best_t = t_in;
+          best_x = x_in;
           best_s = *s;
           since_best = 0;
-        } else if (++since_best >= opt_.coupling_newton_after) {
+        } else if (++since_best >= opt_.coupling_newton_after && newton_run) {
           break;
         }
       }
@@ -311,9 +323,9 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
       krylov += sum.krylov_iterations;
     }
   }
-  if (!settled && newton_possible && best_t.size() > 0) {
+  if (!settled && newton_possible && best_x.size() > 0) {
     *s = best_s;
-    field_->SetTemperature(best_t);
+    field_->SetCouplingState(best_x);
     const CouplingNewton nt = NewtonCoupling(c, td, previous, dt_s, s);
     total += nt.pressure.total_iterations;
     krylov += nt.pressure.krylov_iterations;
