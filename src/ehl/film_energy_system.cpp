@@ -245,15 +245,21 @@ bool FilmEnergySystem::Factorize(bool exact) {
   fact_val_.clear();
   fact_idx_.reserve(row_idx_.size());
   fact_val_.reserve(row_idx_.size());
-  int dropped = 0;
+  // Even the exact factorization leaves the upstream conduction out: with it every column
+  // would join one diagonal block, which the surface history would fill.
+  const bool lag_conduction = moving_walls_;
+  int dropped = 0, lagged = 0;
   for (int c = 0; c + 1 < static_cast<int>(col_ptr_.size()); ++c) {
     fact_ptr_[c] = static_cast<int>(fact_idx_.size());
     const int ci = c / block_;
     const bool wall_column = c % block_ >= nz_;
     for (int e = col_ptr_[c]; e < col_ptr_[c + 1]; ++e) {
       const int ri = row_idx_[e] / block_;
-      if (!exact && ((wall_column && ri > ci && zone[ri] == zone[ci]) ||
-                     (moving_walls_ && !wall_column && ri < ci && zone[ri] != zone[ci]))) {
+      if (lag_conduction && !wall_column && ri < ci && zone[ri] != zone[ci]) {
+        ++lagged;
+        continue;
+      }
+      if (!exact && wall_column && ri > ci && zone[ri] == zone[ci]) {
         ++dropped;
         continue;
       }
@@ -263,6 +269,7 @@ bool FilmEnergySystem::Factorize(bool exact) {
   }
   fact_ptr_.back() = static_cast<int>(fact_idx_.size());
   factorized_exact_ = dropped == 0;
+  lags_conduction_ = lagged > 0;
 
   Klu& k = *klu_;
   const int size = n_ * block_;

@@ -51,9 +51,13 @@ class FilmEnergySystem {
   // numeric one refactored in the old pivot order. False if KLU fails.
   bool Factorize(bool exact);
   bool HasFactorization() const;
-  // Whether the last factorization was of the full sparse A (true also when A has no reverse
-  // flow).
+  // Whether the last factorization kept the whole surface history of A (true also when A has
+  // no reverse flow).
   bool factorized_exact() const { return factorized_exact_; }
+  // Whether the last factorization left the conduction to upstream columns out (moving
+  // walls): then every step is a chord step. A is an M-matrix and this a regular splitting
+  // of it, so the steps converge, at a rate of about the cell Peclet number's inverse.
+  bool lags_conduction() const { return lags_conduction_; }
   // Whether A (assembled) leaves a far history out: then even a factorization of the full A
   // is a chord step, and a step is exact only when this is false.
   bool lags_far_history() const { return moving_walls_ && lag_far_ && !far_.empty(); }
@@ -86,6 +90,7 @@ class FilmEnergySystem {
   mutable std::vector<double> far_y_;  // work array of the far history [m^(1/2) m]
   bool moving_walls_ = false;
   bool lag_far_ = true;  // false after KeepWholeHistory
+  bool lags_conduction_ = false;
   int built_near_ = -1;  // the near band of the built matrix [cells]
   // Per cell (n x nz): volume, mass, dM/dt, x-face mass flux on the west face (n+1 rows:
   // row i = face i - 1/2), cross-film flux through the north face (from j to j+1).

@@ -142,8 +142,12 @@ LineContactSolver::Summary LineContactSolver::Impl::SolveCoupled(const ContactCo
   // Where a coarse grid can start it, the fine Newton waits for that start: from the
   // stalled alternation it rarely converges (measured on the sliding discs).
   Summary sum = CoupleOnce(c, td, previous, dt_s, !sequence, s);
-  if (sum.usable() || !sequence || sum.termination != Termination::kCouplingNotConverged)
-    return sum;
+  // Sequenced too when a pressure solve inside the coupling failed after the first coupling
+  // iteration (a temperature far from the film's: the Ree-Eyring disc at L_T 3, SRR 1 on 257
+  // nodes, whose second pressure solve failed even with the temperature step halved 4 times).
+  const bool coupling_failed = sum.termination == Termination::kCouplingNotConverged ||
+                               (sum.coupling_iterations > 0 && !sum.usable());
+  if (sum.usable() || !sequence || !coupling_failed) return sum;
   const auto t0 = Clock::now();
   if (!thermal_coarse_)
     thermal_coarse_ = std::make_unique<Impl>(UniformGrid(grid_.x_start_m(), grid_.x_end_m(), nc),

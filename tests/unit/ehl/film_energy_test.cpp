@@ -224,13 +224,17 @@ struct EhlRun {
   FilmFlowField f;
 };
 
-EhlRun SolveEhl(int n, int nz, const EhlLikeParameters& c, double beta = 6.5e-4) {
+EhlRun SolveEhl(int n,
+               int nz,
+               const EhlLikeParameters& c,
+               double beta = 6.5e-4,
+               double tolerance_k = 1e-6) {
   const Lubricant oil = EnergyTestOil(beta);
   const UniformGrid g = UniformGrid::AroundHertz(c.half_width_m, n);
   EhlRun r;
   r.f = EhlLikeField(g, nz, oil, c);
   FilmEnergySolver::Options o = Opts(nz, FilmEnergySolver::Walls::kMovingSolids);
-  o.tolerance_k = 1e-6;
+  o.tolerance_k = tolerance_k;
   FilmEnergySolver solver(g, oil, Bronze(), Bronze(), kT0, o);
   r.summary = solver.Solve(r.f, nullptr, 0.0, &r.t);
   return r;
@@ -242,7 +246,10 @@ TEST(FilmEnergySolver, EnergyBalanceClosesWithinOnePercentWithAndWithoutReverseF
   for (double radius : {0.1, 0.01}) {  // inlet film 2.7 h_c (no reverse flow), 13 h_c
     EhlLikeParameters c;
     c.radius_m = radius;
-    const EhlRun r = SolveEhl(257, 11, c);
+    // Solved to 1e-9 K: every step is a chord step (the conduction along x to the upstream
+    // column is outside the factorization), so the balance holds to the solve's tolerance
+    // plus round-off, and the round-off is what this test checks.
+    const EhlRun r = SolveEhl(257, 11, c, 6.5e-4, 1e-9);
     ASSERT_TRUE(r.summary.usable()) << r.summary.BriefReport();
     EXPECT_EQ(r.f.u_m_s.minCoeff() < 0, radius == 0.01);
     const EnergyBalance& b = r.summary.balance;
