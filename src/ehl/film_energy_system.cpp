@@ -124,6 +124,8 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
   const bool transient = in.dt_s > 0;
   ComputeMassFluxes(in, t_iter, rho, drho_dt, drho_dp);
   for (auto* m : {&ap_, &as_, &an_, &aw_, &ae_, &b_}) m->setZero(n_, nz_);
+  cp_ = cp;
+  kx_face_.assign(n_, 0.0);
   for (auto* m : {&compression_, &comp_explicit_t_, &heat_t_})
     m->resize(n_, nz_);  // every entry written below
   // The heating and its decay rate at every cell at once (Eigen's vectorized exp).
@@ -143,6 +145,7 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
                               : 0.0;
     const double kx_e =
         i < n_ - 1 ? 0.25 * (k_w_mk[i + 1] + k_w_mk[i]) * (f.h_m[i + 1] + f.h_m[i]) / dx_ : 0.0;
+    kx_face_[i] = kx_w;
     const double dpdt = f.dpdt_pa_s.size() ? f.dpdt_pa_s[i] : 0.0;
     const double dpdx = i == 0        ? (f.p_pa[1] - f.p_pa[0]) / dx_
                         : i == n_ - 1 ? (f.p_pa[n_ - 1] - f.p_pa[n_ - 2]) / dx_
@@ -234,11 +237,18 @@ bool FilmEnergySystem::Factorize(bool exact) {
   // zones the history is lower block-triangular and costs only forward substitution, so it
   // stays; the upstream conduction, O(1/Peclet) of the convection, is left to the iteration
   // (with walls of fixed temperature there is no history and A is banded: all of it stays).
+  // A face whose convection does not dominate its conduction along x (cell Peclet number
+  // below kZonePeclet in some layer, as in a slow cavitated outlet) joins its columns too:
+  // lagged there, the conduction would make the chord steps contract poorly.
   std::vector<int> zone(n_);
   for (int i = 0; i < n_; ++i) {
-    bool reverse = false;
-    for (int j = 0; i > 0 && j < nz_; ++j) reverse = reverse || fx_(i, j) < 0;
-    zone[i] = reverse ? zone[i - 1] : i;
+    bool joined = false;
+    for (int j = 0; i > 0 && j < nz_; ++j) {
+      const double dxi_j = (j == 0 || j == nz_ - 1) ? 0.5 * dxi_ : dxi_;
+      joined = joined || fx_(i, j) < 0 ||
+               cp_ * std::abs(fx_(i, j)) < kZonePeclet * kx_face_[i] * dxi_j;
+    }
+    zone[i] = joined ? zone[i - 1] : i;
   }
   fact_ptr_.assign(col_ptr_.size(), 0);
   fact_idx_.clear();

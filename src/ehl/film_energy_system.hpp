@@ -91,6 +91,11 @@ class FilmEnergySystem {
   bool moving_walls_ = false;
   bool lag_far_ = true;  // false after KeepWholeHistory
   bool lags_conduction_ = false;
+  // Conduction along x through face i - 1/2 per unit of dxi (0 at the ends) [W/(m K)], and
+  // the heat capacity of the assembled system [J/(kg K)].
+  std::vector<double> kx_face_;
+  double cp_ = 0;
+  static constexpr double kZonePeclet = 10.0;  // [-]
   int built_near_ = -1;  // the near band of the built matrix [cells]
   // Per cell (n x nz): volume, mass, dM/dt, x-face mass flux on the west face (n+1 rows:
   // row i = face i - 1/2), cross-film flux through the north face (from j to j+1).
