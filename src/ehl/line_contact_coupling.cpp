@@ -349,11 +349,12 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
         !energy_failure.empty()
             ? "energy equation: " + energy_failure
             : "the pressure/temperature coupling did not settle in " + std::to_string(k) +
-                  " iterations (last temperature change " + internal::FormatReal(change_t) +
-                  " K, pressure change " + internal::FormatReal(change_p) +
-                  " p_max, largest log change "
-                  "of the Eyring factor " +
-                  internal::FormatReal(change_f) + ")" +
+                  " iterations (last temperature change " + internal::FormatShort(change_t) +
+                  " K, pressure change " + internal::FormatShort(change_p) + " p_max" +
+                  (eff_.non_newtonian
+                       ? ", largest log change of the Eyring factor " + internal::FormatShort(change_f)
+                       : std::string()) +
+                  ")" +
                   (newton_message.empty() ? "" : "; Newton on the coupling: " + newton_message);
     // A sliding Newtonian film: its shear heating grows with the pressure-viscosity without
     // the bound of a shear-thinning oil (the Ree-Eyring films of docs/validation.md section 6
