@@ -119,6 +119,58 @@ double DecayingHeatingExact(double xi, double mu, double beta) {
   return 2 / beta * (std::log(std::cos(s * (2 * xi - 1))) - std::log(std::cos(s)));
 }
 
+// Conduction along x (docs/theory.md, "Energy equation"): a film at rest, as thick as it is
+// long (h = L = 0.1 mm), between walls held at T0, heated by H = G (1 + cos(pi x/L)) sin(pi xi)
+// (a dissipation, so >= 0). No heat crosses the two ends, so -k (T_xx + T_zz) = H with T = T0
+// at both walls and T_x = 0 at both ends, solved by two modes,
+//   T - T0 = G sin(pi xi) [h^2 / (k pi^2) + cos(pi x/L) / (k pi^2 (1/L^2 + 1/h^2))];
+// the second has half the amplitude it would have without conduction along x. The central
+// stencils in x and xi: second order in (dx, dxi) refined together.
+TEST(FilmEnergySolver, ConductionAlongXInAFilmAtRestGivesTheSeparableSolution) {
+  const double length = 1e-4, h = 1e-4, k = 0.13, g_w_m3 = 1e9;
+  const Lubricant oil = testing::IsoviscousOil(1.0);  // k = 0.13, no thermal expansion
+  const double uniform = g_w_m3 * h * h / (k * M_PI * M_PI);
+  const double amplitude = g_w_m3 / (k * M_PI * M_PI * (1 / (length * length) + 1 / (h * h)));
+  std::vector<double> errors;
+  for (int n : {11, 21, 41}) {
+    const int nz = n;
+    const UniformGrid g(0.0, length, n);
+    FilmFlowField f;
+    f.p_pa = Eigen::VectorXd::Zero(n);
+    f.h_m = Eigen::VectorXd::Constant(n, h);
+    f.u_m_s = Eigen::MatrixXd::Zero(n, nz);
+    f.heating_w_m3.resize(n, nz);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < nz; ++j)
+        f.heating_w_m3(i, j) =
+            g_w_m3 * (1 + std::cos(M_PI * g.x(i) / length)) * std::sin(M_PI * j / (nz - 1.0));
+    FilmEnergySolver solver(g, oil, Bronze(), Bronze(), kT0,
+                            Opts(nz, FilmEnergySolver::Walls::kFixedTemperature));
+    FilmTemperature t;
+    const auto sum = solver.Solve(f, nullptr, 0.0, &t);
+    ASSERT_TRUE(sum.usable()) << sum.BriefReport();
+    double worst = 0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < nz; ++j) {
+        const double exact = (uniform + amplitude * std::cos(M_PI * g.x(i) / length)) *
+                             std::sin(M_PI * j / (nz - 1.0));
+        worst = std::max(worst, std::abs(t.t_k(i, j) - kT0 - exact));
+      }
+    errors.push_back(worst / amplitude);
+    // The heat generated leaves through the walls: the balance closes.
+    EXPECT_LT(sum.balance.RelativeError(), 1e-6) << n;
+  }
+  for (size_t i = 1; i < errors.size(); ++i) {
+    const double order = std::log2(errors[i - 1] / errors[i]);
+    std::printf("conduction along x, refinement %zu: relative error %.3e, order %.3f\n", i,
+                errors[i], order);
+    EXPECT_GT(order, 1.8) << i;
+  }
+  // Without the conduction along x the cos mode would be twice as large: an error of
+  // amplitude / amplitude = 100 % of the reference.
+  EXPECT_LT(errors.back(), 2e-3);
+}
+
 TEST(FilmEnergySolver, HeatingThatFallsWithTemperatureGivesTheAnalyticProfile) {
   const double h = 1e-6, k = 0.13, beta = 0.046, mu = 40.0;
   const double heating = mu * k / (beta * h * h);     // H [W/m^3]
