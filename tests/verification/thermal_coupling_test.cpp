@@ -117,6 +117,28 @@ TEST(ThermalCoupling, SlidingContactAtABacksOffAndSettles) {
             10 * solver.options().thermal_tolerance_k);
 }
 
+// The steel disc of docs/validation.md section 6 at L_T 5, SRR 0.5 (R = 20 mm, p_H = 0.8 GPa).
+ThermalDisc HotSlidingDisc() {
+  ThermalDisc d;
+  d.um_m_s = testing::SpeedForLoading(Sae40(), 5.0);
+  d.srr = 0.5;
+  return d;
+}
+
+// Solved again from itself, a settled film settles within a few alternations (from its
+// temperature and the Eyring factor of its pressure, without its Anderson history) on the same
+// central film; returns the re-solved state.
+FilmState ExpectFixedPoint(LineContactSolver* solver, const ContactConditions& c,
+                           const FilmState& s) {
+  FilmState again = s;
+  const auto re = solver->SolveSteady(c, &again);
+  EXPECT_TRUE(re.usable()) << re.BriefReport();
+  EXPECT_LE(re.coupling_iterations, 6);
+  EXPECT_NEAR(again.CentralFilm(solver->grid()), s.CentralFilm(solver->grid()),
+              1e-4 * s.CentralFilm(solver->grid()));
+  return again;
+}
+
 // The Ree-Eyring steel disc of docs/validation.md section 6 at L_T = 5, SRR 0.5 (257 nodes):
 // its coupling converges, but slowly and unevenly (the temperature change falls by about a
 // half per 10 iterations), and is still 0.3 K from settled when max_coupling_iterations (40)
@@ -126,9 +148,7 @@ TEST(ThermalCoupling, SlidingContactAtABacksOffAndSettles) {
 // balance of VALIDATION.md section 4 within 1 % and be found again from itself.
 TEST(ThermalCoupling, ACouplingStillConvergingGoesPastItsIterationBudget) {
   const Lubricant& oil = Sae40();
-  ThermalDisc d;  // R = 20 mm, p_H = 0.8 GPa
-  d.um_m_s = testing::SpeedForLoading(oil, 5.0);
-  d.srr = 0.5;
+  const ThermalDisc d = HotSlidingDisc();
   const ContactConditions c = d.Conditions(oil);
   LineContactSolver::Options o;
   ASSERT_EQ(o.max_coupling_iterations, 40);
@@ -143,23 +163,17 @@ TEST(ThermalCoupling, ACouplingStillConvergingGoesPastItsIterationBudget) {
   EXPECT_LE(sum.coupling_iterations, o.max_coupling_iterations_converging);
   EXPECT_GE(sum.energy_balance_error, 0.0);
   EXPECT_LT(sum.energy_balance_error, 0.01);
-  FilmState again = s;
-  const auto re = solver.SolveSteady(c, &again);
-  ASSERT_TRUE(re.usable()) << re.BriefReport();
   // Solved again from itself it settles on the same film, within a few alternations: it
   // starts from the settled temperature and the Eyring factor of the settled pressure (4
   // iterations measured; 26 when that factor was only relaxed half-way from 1, the
   // isothermal non-Newtonian rule), though without its Anderson history. The stopping test
   // (temperature change < 0.01 K per iteration) at a contraction of about 0.93 per iteration
   // (a half per 10) leaves up to 0.01 / (1 - 0.93) = 0.14 K to the fixed point.
+  const FilmState again = ExpectFixedPoint(&solver, c, s);
   const double dt_max = (again.temperature.t_k - s.temperature.t_k).cwiseAbs().maxCoeff();
-  std::printf("again: %d coupling iterations, max |dT| %.3g K, h_c %.6g vs %.6g um\n",
-              re.coupling_iterations, dt_max, again.CentralFilm(solver.grid()) * 1e6,
-              s.CentralFilm(solver.grid()) * 1e6);
-  EXPECT_LE(re.coupling_iterations, 6);
+  std::printf("again: max |dT| %.3g K, h_c %.6g vs %.6g um\n", dt_max,
+              again.CentralFilm(solver.grid()) * 1e6, s.CentralFilm(solver.grid()) * 1e6);
   EXPECT_LT(dt_max, 0.2);
-  EXPECT_NEAR(again.CentralFilm(solver.grid()), s.CentralFilm(solver.grid()),
-              1e-4 * s.CentralFilm(solver.grid()));
 
   // Neither the extension nor Newton on the coupling: the alternation stops unsettled.
   o.max_coupling_iterations_converging = o.max_coupling_iterations;
@@ -197,9 +211,7 @@ TEST(ThermalCoupling, ACouplingStillConvergingGoesPastItsIterationBudget) {
 // closes the energy balance (VALIDATION.md section 4) and is a fixed point.
 TEST(ThermalCoupling, ReeEyringDiscAtLoading5AndSlide05SettlesOn513Nodes) {
   const Lubricant& oil = Sae40();
-  ThermalDisc d;  // R = 20 mm, p_H = 0.8 GPa
-  d.um_m_s = testing::SpeedForLoading(oil, 5.0);
-  d.srr = 0.5;
+  const ThermalDisc d = HotSlidingDisc();
   const ContactConditions c = d.Conditions(oil);
   LineContactSolver solver = DiscSolver(d, oil, 513, true, {}, ContactSolids{}, true);
   FilmState s;
@@ -212,12 +224,8 @@ TEST(ThermalCoupling, ReeEyringDiscAtLoading5AndSlide05SettlesOn513Nodes) {
               s.CentralFilm(solver.grid()) * 1e6, sum.energy_balance_error);
   EXPECT_GE(sum.energy_balance_error, 0.0);
   EXPECT_LT(sum.energy_balance_error, 0.01);
-  FilmState again = s;
-  const auto re = solver.SolveSteady(c, &again);
-  ASSERT_TRUE(re.usable()) << re.BriefReport();
-  EXPECT_LE(re.coupling_iterations, 6);
-  EXPECT_NEAR(again.CentralFilm(solver.grid()), s.CentralFilm(solver.grid()),
-              1e-4 * s.CentralFilm(solver.grid()));
+  const FilmState again = ExpectFixedPoint(&solver, c, s);
+  EXPECT_LT((again.temperature.t_k - s.temperature.t_k).cwiseAbs().maxCoeff(), 0.2);
 }
 
 }  // namespace
