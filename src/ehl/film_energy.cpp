@@ -301,7 +301,7 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
     system.Unpack(x, t0_, t);
     // Nothing depends on T when d rho/dT = 0: a step with a fresh factorization is the solution.
     const bool exact_step = fresh && system.factorized_exact() && !system.lags_far_history() &&
-                            !system.lags_conduction();
+                            !system.lags_couplings();
     s.max_change_k = (linear && exact_step && options_.relaxation == 1.0) ? 0.0 : change;
     last_change = change;
     // Remaining error of a contraction r after a step of size `change`: change r / (1 - r).

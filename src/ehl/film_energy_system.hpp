@@ -54,10 +54,12 @@ class FilmEnergySystem {
   // Whether the last factorization kept the whole surface history of A (true also when A has
   // no reverse flow).
   bool factorized_exact() const { return factorized_exact_; }
-  // Whether the last factorization left the conduction to upstream columns out (moving
-  // walls): then every step is a chord step. A is an M-matrix and this a regular splitting
-  // of it, so the steps converge, at a rate of about the cell Peclet number's inverse.
-  bool lags_conduction() const { return lags_conduction_; }
+  // Whether even the last exact factorization left couplings of A out: the conduction to
+  // upstream columns (moving walls) and the history beyond the near band inside recirculation
+  // zones. Then every step is a chord step. A is an M-matrix and leaving out upstream
+  // conduction a regular splitting of it, so those steps converge, at a rate of about the
+  // cell Peclet number's inverse.
+  bool lags_couplings() const { return lags_couplings_; }
   // Whether A (assembled) leaves a far history out: then even a factorization of the full A
   // is a chord step, and a step is exact only when this is false.
   bool lags_far_history() const { return moving_walls_ && lag_far_ && !far_.empty(); }
@@ -90,7 +92,7 @@ class FilmEnergySystem {
   mutable std::vector<double> far_y_;  // work array of the far history [m^(1/2) m]
   bool moving_walls_ = false;
   bool lag_far_ = true;  // false after KeepWholeHistory
-  bool lags_conduction_ = false;
+  bool lags_couplings_ = false;
   // Conduction along x through face i - 1/2 per unit of dxi (0 at the ends) [W/(m K)], and
   // the heat capacity of the assembled system [J/(kg K)].
   std::vector<double> kx_face_;
