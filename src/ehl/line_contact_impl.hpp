@@ -115,9 +115,10 @@ class LineContactSolver::Impl {
     Summary pressure;     // the last pressure solve (at the returned temperature)
     double balance = -1;  // energy balance error of the last energy solve [-]
   };
-  // Newton-Krylov on T = G(T), G = the energy solve at the pressure solved with the film at T
-  // (ehl/fixed_point_newton.hpp), from the field's temperature and the state *s; on return
-  // *s holds the pressure solved at the last temperature, which the field holds.
+  // Newton-Krylov on x = G(x), x = the film temperature (and w log f of the Eyring factor in
+  // Ree-Eyring runs), G = the energy solve (and the factor) at the pressure solved with the
+  // film at x (ehl/fixed_point_newton.hpp), from the field's state and the state *s; on
+  // return *s holds the pressure solved at the last x, which the field holds.
   CouplingNewton NewtonCoupling(const ContactConditions& c,
                                 const internal::TimeDerivative& td,
                                 const FilmState* previous,
