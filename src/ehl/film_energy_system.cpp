@@ -141,8 +141,8 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
     const double dxc = source_.CellLength(i);
     const double kappa = k_w_mk[i] * dxc / (f.h_m[i] * dxi_);  // conduction across the film
     // Conduction along x through the west and east faces, per unit of dxi [W/(m K)].
-    const double kx_w = i > 0 ? 0.25 * (k_w_mk[i - 1] + k_w_mk[i]) * (f.h_m[i - 1] + f.h_m[i]) / dx_
-                              : 0.0;
+    const double kx_w =
+        i > 0 ? 0.25 * (k_w_mk[i - 1] + k_w_mk[i]) * (f.h_m[i - 1] + f.h_m[i]) / dx_ : 0.0;
     const double kx_e =
         i < n_ - 1 ? 0.25 * (k_w_mk[i + 1] + k_w_mk[i]) * (f.h_m[i + 1] + f.h_m[i]) / dx_ : 0.0;
     kx_face_[i] = kx_w;
@@ -245,8 +245,8 @@ bool FilmEnergySystem::Factorize(bool exact) {
     bool joined = false;
     for (int j = 0; i > 0 && j < nz_; ++j) {
       const double dxi_j = (j == 0 || j == nz_ - 1) ? 0.5 * dxi_ : dxi_;
-      joined = joined || fx_(i, j) < 0 ||
-               cp_ * std::abs(fx_(i, j)) < kZonePeclet * kx_face_[i] * dxi_j;
+      joined =
+          joined || fx_(i, j) < 0 || cp_ * std::abs(fx_(i, j)) < kZonePeclet * kx_face_[i] * dxi_j;
     }
     zone[i] = joined ? zone[i - 1] : i;
   }

@@ -200,8 +200,7 @@ Eigen::VectorXd FilmField::CouplingState() const {
 void FilmField::SetCouplingState(const Eigen::VectorXd& x) {
   const Eigen::Index n = t_.t_k.rows(), m = t_.t_k.size();
   SetTemperature(x.head(m).reshaped(n, nz_));
-  if (eyring_)
-    factor_ = (x.tail(m) / kLogFactorWeightK).array().min(0.0).exp().reshaped(n, nz_);
+  if (eyring_) factor_ = (x.tail(m) / kLogFactorWeightK).array().min(0.0).exp().reshaped(n, nz_);
 }
 
 void FilmField::CouplingBounds(double t0_k, Eigen::VectorXd* lower, Eigen::VectorXd* upper) const {

@@ -15,12 +15,10 @@ FixedPointNewtonResult SolveFixedPoint(const FixedPointMap& map,
   const Eigen::Index n = x->size();
   Eigen::VectorXd g(n), f(n), gt(n);
   bool at_x = false;  // the last evaluation of G was at *x
-  const Eigen::VectorXd lower = o.lower_bounds.size() == n
-                                    ? o.lower_bounds
-                                    : Eigen::VectorXd::Constant(n, o.lower).eval();
-  const Eigen::VectorXd upper = o.upper_bounds.size() == n
-                                    ? o.upper_bounds
-                                    : Eigen::VectorXd::Constant(n, o.upper).eval();
+  const Eigen::VectorXd lower =
+      o.lower_bounds.size() == n ? o.lower_bounds : Eigen::VectorXd::Constant(n, o.lower).eval();
+  const Eigen::VectorXd upper =
+      o.upper_bounds.size() == n ? o.upper_bounds : Eigen::VectorXd::Constant(n, o.upper).eval();
   auto clamp = [&](Eigen::VectorXd* v) { *v = v->cwiseMax(lower).cwiseMin(upper); };
   auto eval = [&](const Eigen::VectorXd& at, Eigen::VectorXd* out) {
     ++r.map_evaluations;

@@ -211,8 +211,7 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
   // converges) and take Newton on (T, w log f) only from the best iterate of an alternation
   // that did not settle.
   const bool newton_run = eff_.thermal && !eff_.non_newtonian && opt_.coupling_newton_after > 0;
-  const bool newton_last =
-      eff_.thermal && eff_.non_newtonian && opt_.coupling_newton_after > 0;
+  const bool newton_last = eff_.thermal && eff_.non_newtonian && opt_.coupling_newton_after > 0;
   const bool newton_possible = newton && (newton_run || newton_last);
   double best_change = std::numeric_limits<double>::infinity();
   int since_best = 0;
@@ -351,9 +350,9 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
             : "the pressure/temperature coupling did not settle in " + std::to_string(k) +
                   " iterations (last temperature change " + internal::FormatShort(change_t) +
                   " K, pressure change " + internal::FormatShort(change_p) + " p_max" +
-                  (eff_.non_newtonian
-                       ? ", largest log change of the Eyring factor " + internal::FormatShort(change_f)
-                       : std::string()) +
+                  (eff_.non_newtonian ? ", largest log change of the Eyring factor " +
+                                            internal::FormatShort(change_f)
+                                      : std::string()) +
                   ")" +
                   (newton_message.empty() ? "" : "; Newton on the coupling: " + newton_message);
     // A sliding Newtonian film: its shear heating grows with the pressure-viscosity without

@@ -128,7 +128,8 @@ ThermalDisc HotSlidingDisc() {
 // Solved again from itself, a settled film settles within a few alternations (from its
 // temperature and the Eyring factor of its pressure, without its Anderson history) on the same
 // central film; returns the re-solved state.
-FilmState ExpectFixedPoint(LineContactSolver* solver, const ContactConditions& c,
+FilmState ExpectFixedPoint(LineContactSolver* solver,
+                           const ContactConditions& c,
                            const FilmState& s) {
   FilmState again = s;
   const auto re = solver->SolveSteady(c, &again);
@@ -217,11 +218,12 @@ TEST(ThermalCoupling, ReeEyringDiscAtLoading5AndSlide05SettlesOn513Nodes) {
   FilmState s;
   const auto sum = solver.SolveSteady(c, &s);
   ASSERT_TRUE(sum.usable()) << sum.BriefReport();
-  std::printf("513 nodes: %d coupling iterations, %d coupling Newton steps, dT_max %.2f K, "
-              "h_c %.5f um, balance %.2e\n",
-              sum.coupling_iterations, sum.coupling_newton_iterations,
-              s.temperature.MaxTemperature() - c.temperature_k,
-              s.CentralFilm(solver.grid()) * 1e6, sum.energy_balance_error);
+  std::printf(
+      "513 nodes: %d coupling iterations, %d coupling Newton steps, dT_max %.2f K, "
+      "h_c %.5f um, balance %.2e\n",
+      sum.coupling_iterations, sum.coupling_newton_iterations,
+      s.temperature.MaxTemperature() - c.temperature_k, s.CentralFilm(solver.grid()) * 1e6,
+      sum.energy_balance_error);
   EXPECT_GE(sum.energy_balance_error, 0.0);
   EXPECT_LT(sum.energy_balance_error, 0.01);
   const FilmState again = ExpectFixedPoint(&solver, c, s);

@@ -276,11 +276,8 @@ struct EhlRun {
   FilmFlowField f;
 };
 
-EhlRun SolveEhl(int n,
-               int nz,
-               const EhlLikeParameters& c,
-               double beta = 6.5e-4,
-               double tolerance_k = 1e-6) {
+EhlRun SolveEhl(
+    int n, int nz, const EhlLikeParameters& c, double beta = 6.5e-4, double tolerance_k = 1e-6) {
   const Lubricant oil = EnergyTestOil(beta);
   const UniformGrid g = UniformGrid::AroundHertz(c.half_width_m, n);
   EhlRun r;
