@@ -15,6 +15,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -32,9 +33,17 @@ class BandedFilmPreconditioner {
 
  private:
   void Substitute(double* b) const;  // b <- (core)^{-1} b with the LU factors in ab_
+  void MeasureFactors();
   int n_ = 0, size_ = 0, kl_ = 0, ku_ = 0, ldab_ = 0;  // core size 2 (n - 2)
   std::vector<double> ab_;     // LAPACK band storage of the core, then its LU factors
   std::vector<int> ipiv_;
+  // The factors packed column by column for the substitution (MeasureFactors): for column j,
+  // its L multipliers up to the last nonzero one (l_len_[j] <= kl), then U's entries above
+  // the diagonal from the first nonzero one (u_len_[j] <= kl + ku; about ku where dgbtrf did
+  // not pivot), starting at offset_[j]; and the reciprocal of U(j, j).
+  std::vector<double> packed_, inv_diag_;
+  std::vector<int> u_len_, l_len_;
+  std::vector<std::size_t> offset_;
   Eigen::MatrixXd y_;          // C^{-1} B_c (size_ x 3)
   Eigen::MatrixXd border_;     // B_r restricted to the P columns (3 x (n - 2))
   Eigen::Matrix3d schur_inv_;  // (D - B_r C^{-1} B_c)^{-1}
