@@ -122,33 +122,72 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
 
 namespace {
 
-// The substitution with packed factors (see BandedFilmPreconditioner::MeasureFactors). Cloned
-// for x86-64-v3 (AVX2 + FMA), chosen when the program starts on such a processor; the default
-// clone is the SSE2 code of a generic build. The updates of one column are independent, so
-// wider vectors shorten each step of the substitution's serial chain.
+// The substitution with packed factors (see BandedFilmPreconditioner::MeasureFactors). Both
+// passes run along a serial chain: each unknown is final only once the previous column has
+// updated it. The two unknowns next in line are kept in registers (c0, c1) and updated there,
+// so the chain waits for one multiply-add per column instead of a vector store and the load
+// of the next unknown; the rest of each column is a vector update off the chain. The back
+// pass uses U scaled to a unit diagonal (its rows divided by U(i, i), the right-hand side
+// scaled once), so that its chain has no multiplication either. Cloned for x86-64-v3 (AVX2 +
+// FMA), chosen when the program starts on such a processor; the default clone is the SSE2
+// code of a generic build.
 __attribute__((target_clones("arch=x86-64-v3", "default"))) void SubstitutePacked(
     int n, const int* ipiv, const int* l_len, const int* u_len, const std::size_t* offset,
     const double* packed, const double* inv_diag, double* b) {
+  if (n < 3) {  // too short for the register window below
+    for (int j = 0; j + 1 < n; ++j) {
+      const int l = ipiv[j] - 1;
+      std::swap(b[l], b[j]);
+      if (l_len[j] > 0) b[j + 1] -= packed[offset[j]] * b[j];
+    }
+    for (int j = n - 1; j >= 0; --j) {
+      b[j] *= inv_diag[j];
+      if (j > 0 && u_len[j] > 0) b[j - 1] -= packed[offset[j] + l_len[j]] * b[j];
+    }
+    return;
+  }
+  // Forward: unit lower factor with row interchanges. Entering column j, c0 and c1 hold
+  // b[j] and b[j + 1]; memory holds b[k], k >= j + 2.
+  double c0 = b[0], c1 = b[1];
   for (int j = 0; j + 1 < n; ++j) {
     const int l = ipiv[j] - 1;
-    const double bj = b[l];
-    if (l != j) {
-      b[l] = b[j];
-      b[j] = bj;
+    if (l != j) {  // an interchange: through memory
+      b[j] = c0;
+      b[j + 1] = c1;
+      std::swap(b[j], b[l]);
+      c0 = b[j];
+      c1 = b[j + 1];
     }
-    if (bj == 0.0) continue;
-    const double* col = packed + offset[j];
-    double* y = b + j + 1;
-    for (int i = 0, len = l_len[j]; i < len; ++i) y[i] -= col[i] * bj;
-  }
-  for (int j = n - 1; j >= 0; --j) {
-    if (b[j] == 0.0) continue;
-    const double bj = b[j] * inv_diag[j];
+    const double bj = c0;
     b[j] = bj;
+    const int len = l_len[j];
+    const double* col = packed + offset[j];
+    double c2 = j + 2 < n ? b[j + 2] : 0.0;
+    if (len >= 1) c1 -= col[0] * bj;
+    if (len >= 2) c2 -= col[1] * bj;
+    double* y = b + j + 1;
+    for (int i = 2; i < len; ++i) y[i] -= col[i] * bj;
+    c0 = c1;
+    c1 = c2;
+  }
+  b[n - 1] = c0;
+  // Back: unit upper factor on the scaled right-hand side. Entering column j, c0 and c1
+  // hold b[j] and b[j - 1]; memory holds b[k], k <= j - 2.
+  for (int j = 0; j < n; ++j) b[j] *= inv_diag[j];
+  c0 = b[n - 1];
+  c1 = b[n - 2];
+  for (int j = n - 1; j >= 0; --j) {
+    const double xj = c0;
+    b[j] = xj;
     const int len = u_len[j];
-    const double* col = packed + offset[j] + l_len[j];
+    const double* col = packed + offset[j] + l_len[j];  // rows j - len .. j - 1
+    double c2 = j >= 2 ? b[j - 2] : 0.0;
+    if (len >= 1) c1 -= col[len - 1] * xj;
+    if (len >= 2) c2 -= col[len - 2] * xj;
     double* y = b + j - len;
-    for (int i = 0; i < len; ++i) y[i] -= col[i] * bj;
+    for (int i = 0; i + 2 < len; ++i) y[i] -= col[i] * xj;
+    c0 = c1;
+    c1 = c2;
   }
 }
 
@@ -156,10 +195,11 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void SubstitutePacke
 
 // Packs the factors dgbtrf leaves in ab_ (LAPACK band storage: row interchanges, the unit
 // lower multipliers column by column, then the upper band of kl + ku superdiagonals) for the
-// substitution. Partial pivoting widens U's band from ku to kl + ku only where rows were
-// interchanged, and the band storage keeps the zeros; packing only each column's nonzero
-// span halves the memory the substitution streams through (at 4097 nodes U's columns span
-// about 10 of the 32 superdiagonals).
+// substitution: L's columns and U's columns (scaled by the reciprocals of U's diagonal, row
+// by row) next to each other. Partial pivoting widens U's band from ku to kl + ku only where
+// rows were interchanged, and the band storage keeps the zeros; packing only each column's
+// nonzero span halves the memory the substitution streams through (at 4097 nodes U's columns
+// span about 10 of the 32 superdiagonals).
 void BandedFilmPreconditioner::MeasureFactors() {
   const int n = size_, kv = kl_ + ku_;
   inv_diag_.resize(n);
@@ -184,7 +224,9 @@ void BandedFilmPreconditioner::MeasureFactors() {
     const double* col = ab_.data() + static_cast<std::size_t>(j) * ldab_;
     double* out = packed_.data() + offset_[j];
     std::copy(col + kv + 1, col + kv + 1 + l_len_[j], out);
-    std::copy(col + kv - u_len_[j], col + kv, out + l_len_[j]);
+    out += l_len_[j];
+    for (int k = 0, len = u_len_[j]; k < len; ++k)  // U(i, j) / U(i, i), i = j - len + k
+      out[k] = col[kv - len + k] * inv_diag_[j - len + k];
   }
 }
 

@@ -23,6 +23,8 @@ bool CoarseCorrection::Build(const NewtonSystem& sys, int stride) {
   n_ = n;
   stride_ = stride;
   nc_ = nc;
+  hat_.resize(stride);
+  for (int t = 0; t < stride; ++t) hat_[t] = 1.0 - static_cast<double>(t) / stride;
   const int g = stride;
   // kh[d] = sum_t (1 - |t|/G) K_|d - t|: the deflection (per unit p_ref, scaled to H) a
   // distance d from the centre of a unit hat.
@@ -110,10 +112,7 @@ void CoarseCorrection::Apply(const Eigen::VectorXd& x, Eigen::VectorXd* y) const
   for (int c = 0; c < nc_; ++c) {
     const int centre = (c + 1) * g;
     double s = x[centre - 1];
-    for (int t = 1; t < g; ++t) {
-      const double w = 1.0 - static_cast<double>(t) / g;
-      s += w * (x[centre - t - 1] + x[centre + t - 1]);
-    }
+    for (int t = 1; t < g; ++t) s += hat_[t] * (x[centre - t - 1] + x[centre + t - 1]);
     rc_[c] = s;
   }
   rc_[nc_] = x[m];
@@ -123,7 +122,7 @@ void CoarseCorrection::Apply(const Eigen::VectorXd& x, Eigen::VectorXd* y) const
     const int centre = (c + 1) * g;
     (*y)[centre - 1] += sc[c];
     for (int t = 1; t < g; ++t) {
-      const double w = (1.0 - static_cast<double>(t) / g) * sc[c];
+      const double w = hat_[t] * sc[c];
       (*y)[centre - t - 1] += w;
       (*y)[centre + t - 1] += w;
     }

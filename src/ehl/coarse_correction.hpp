@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/LU>
+#include <vector>
 
 namespace tehl::internal {
 
@@ -34,6 +35,7 @@ class CoarseCorrection {
   Eigen::MatrixXd e_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   mutable Eigen::VectorXd rc_;
+  std::vector<double> hat_;  // hat weights 1 - t/G, t = 0 .. G - 1
 };
 
 }  // namespace tehl::internal
