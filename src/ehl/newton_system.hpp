@@ -66,9 +66,9 @@ struct KrylovSettings {
   int max_iterations = 400;
   int band = 24;
   double relative_tolerance = 1e-10;
-  // Newton-Krylov: > 0 = the two-level preconditioner with about this many coarse pressures
-  // (banded_film_preconditioner.hpp, coarse_correction.hpp); 0 = the hierarchy of strides
-  // (film_augmented_preconditioner.hpp).
+  // Newton-Krylov: > 0 = the two-level preconditioner with c to 2c coarse pressures (one per
+  // 8 cells in between; banded_film_preconditioner.hpp, coarse_correction.hpp); 0 = the
+  // hierarchy of strides (film_augmented_preconditioner.hpp).
   int coarse_pressures = 128;
 };
 std::unique_ptr<NewtonLinearSolver> MakeNewtonKrylovSolver(const KrylovSettings& settings);

@@ -104,9 +104,10 @@ class LineContactSolver {
     int reused_lu_max_gmres = 20;     // kReusedLu refactorizes beyond this [-]
     int preconditioner_band = 8;      // Newton-Krylov: half-band of the second-differenced
                                       // elastic kernel per preconditioner level [-]
-    int preconditioner_coarse_pressures = 128;  // Newton-Krylov: coarse-space size of the
-                                      // two-level preconditioner; 0 = the UMFPACK hierarchy
-                                      // of strides instead (docs/performance.md) [-]
+    int preconditioner_coarse_pressures = 128;  // Newton-Krylov: coarse-space size c of the
+                                      // two-level preconditioner (c to 2c pressures, one per
+                                      // 8 cells in between); 0 = the UMFPACK hierarchy of
+                                      // strides instead (docs/performance.md) [-]
     int max_continuation_stages = 12; // load / pressure-viscosity continuation stages [-]
     int coarse_grid_nodes = 129;      // grid sequencing halves the grid down to this [-]
     double min_step_fraction = 1.0 / 1024;  // smallest line-search step [-]
