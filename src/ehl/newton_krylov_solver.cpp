@@ -5,7 +5,7 @@
 //  - two-level (settings.coarse_pressures > 0, the default): the one-level augmented system as
 //    a bordered band LU (banded_film_preconditioner.hpp, LAPACK) after a Galerkin coarse-space
 //    correction of coarse_pressures to 2 coarse_pressures piecewise-linear pressures (one per
-//    8 cells in between; coarse_correction.hpp):
+//    16 cells in between; coarse_correction.hpp):
 //      y = C x;  y += M^{-1} (x - J y).
 //    Linear cost and memory in n; falls back to the hierarchy below if a factorization fails.
 //  - hierarchy of strides (coarse_pressures = 0): the UMFPACK factorization of
@@ -88,12 +88,14 @@ class NewtonKrylovSolver final : public NewtonLinearSolver {
   bool Factorize(const NewtonSystem& sys, std::string* why) {
     two_level_ = false;
     if (settings_.coarse_pressures > 0) {
-      // One coarse pressure per 8 cells, between c and 2c (c = coarse_pressures): on fine
+      // One coarse pressure per 16 cells, between c and 2c (c = coarse_pressures): on fine
       // grids the band (8 nodes) and the coarse spacing then leave fewer scales to GMRES
       // (docs/performance.md: 13.7 -> 11.8 GMRES iterations per Newton iteration at 4097
-      // nodes, 18.5 -> 14.5 at 16385), while up to 1025 nodes nothing changes.
+      // nodes, 18.5 -> 14.5 at 16385), while up to 2049 nodes nothing changes. One per 8
+      // cells (2c from 2049 nodes) made 2049 nodes so much faster than 4097 that the cold
+      // time grew by 2.51 on that doubling, against the target of 2.3.
       const int c = settings_.coarse_pressures;
-      const int target = std::clamp((sys.n - 1) / 8, c, 2 * c);
+      const int target = std::clamp((sys.n - 1) / 16, c, 2 * c);
       const int stride = std::max(2, (sys.n - 1) / (target + 1));
       std::string banded_why;
       two_level_ = coarse_.Build(sys, stride) && banded_.Factorize(sys, settings_.band, &banded_why);

@@ -67,7 +67,7 @@ struct KrylovSettings {
   int band = 24;
   double relative_tolerance = 1e-10;
   // Newton-Krylov: > 0 = the two-level preconditioner with c to 2c coarse pressures (one per
-  // 8 cells in between; banded_film_preconditioner.hpp, coarse_correction.hpp); 0 = the
+  // 16 cells in between; banded_film_preconditioner.hpp, coarse_correction.hpp); 0 = the
   // hierarchy of strides (film_augmented_preconditioner.hpp).
   int coarse_pressures = 128;
 };

@@ -106,7 +106,7 @@ class LineContactSolver {
                                       // elastic kernel per preconditioner level [-]
     int preconditioner_coarse_pressures = 128;  // Newton-Krylov: coarse-space size c of the
                                       // two-level preconditioner (c to 2c pressures, one per
-                                      // 8 cells in between); 0 = the UMFPACK hierarchy of
+                                      // 16 cells in between); 0 = the UMFPACK hierarchy of
                                       // strides instead (docs/performance.md) [-]
     int max_continuation_stages = 12; // load / pressure-viscosity continuation stages [-]
     int coarse_grid_nodes = 129;      // grid sequencing halves the grid down to this [-]
