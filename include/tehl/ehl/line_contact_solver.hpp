@@ -104,7 +104,7 @@ class LineContactSolver {
     int reused_lu_max_gmres = 20;     // kReusedLu refactorizes beyond this [-]
     int preconditioner_band = 8;      // Newton-Krylov: half-band of the second-differenced
                                       // elastic kernel per preconditioner level [-]
-    int preconditioner_coarse_pressures = 128;  // Newton-Krylov: coarse-space size c of the
+    int preconditioner_coarse_pressures = 128;  // Newton-Krylov: coarse size c of the
                                       // two-level preconditioner (c to 2c pressures, one per
                                       // 16 cells in between); 0 = the UMFPACK hierarchy of
                                       // strides instead (docs/performance.md) [-]
