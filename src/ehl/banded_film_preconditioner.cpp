@@ -132,8 +132,14 @@ namespace {
 // FMA), chosen when the program starts on such a processor; the default clone is the SSE2
 // code of a generic build.
 __attribute__((target_clones("arch=x86-64-v3", "default"))) void SubstitutePacked(
-    int n, const int* ipiv, const int* l_len, const int* u_len, const std::size_t* offset,
-    const double* packed, const double* inv_diag, double* b) {
+    int n,
+    const int* ipiv,
+    const int* l_len,
+    const int* u_len,
+    const std::size_t* offset,
+    const double* packed,
+    const double* inv_diag,
+    double* b) {
   if (n < 3) {  // too short for the register window below
     for (int j = 0; j + 1 < n; ++j) {
       const int l = ipiv[j] - 1;
