@@ -218,6 +218,36 @@ void BM_WarmNewton(benchmark::State& state) {
   state.counters["failed"] = static_cast<double>(failed);
 }
 
+// One evaluation of the film and the scaled residual with its linearization at a converged
+// state (what each Newton iteration pays at least once), in FFT convolutions of the same n
+// timed in the same process (`residual_per_fft`).
+void BM_Residual(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const tehl::Lubricant oil = tehl::testing::ReferenceOil(kEta0, 0.68);
+  const tehl::UniformGrid grid = Grid(n);
+  tehl::LineContactSolver solver(grid, kEPrime, oil, SteadyEffects(), SolverOptions(2));
+  const tehl::ContactConditions c = MoesPoint();
+  tehl::FilmState s;
+  solver.SolveSteady(c, &s);
+  const tehl::ElasticDeflection k(n, grid.dx_m(), kEPrime, tehl::FftPlanEffort::kMeasure);
+  Eigen::VectorXd v(n);
+  const int fft_reps = std::max(200, 2000000 / n);
+  auto t0 = Clock::now();
+  for (int r = 0; r < fft_reps; ++r) {
+    k.Apply(s.p_pa.data(), v.data());
+    benchmark::DoNotOptimize(v.data());
+  }
+  const double fft_s = Seconds(t0) / fft_reps;
+  long evaluations = 0;
+  t0 = Clock::now();
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(solver.ResidualNorm(c, s));
+    ++evaluations;
+  }
+  state.counters["fft_us"] = 1e6 * fft_s;
+  state.counters["residual_per_fft"] = Seconds(t0) / std::max(1L, evaluations) / fft_s;
+}
+
 void Sizes(benchmark::internal::Benchmark* b) {
   for (int n = 513; n <= 16385; n = 2 * n - 1) b->Arg(n);
 }
@@ -233,6 +263,7 @@ void Solves(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_DeflectionPlanning)->Apply(Sizes)->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FftConvolution)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Residual)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Steady)->Apply(Solves)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK(BM_WarmNewton)
     ->ArgsProduct({{513, 1025, 2049, 4097, 8193, 16385}, {2, 4}})

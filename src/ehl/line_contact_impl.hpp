@@ -163,6 +163,7 @@ class LineContactSolver::Impl {
   std::optional<ElasticDeflection> elastic_;
   std::unique_ptr<internal::NewtonLinearSolver> linear_;
   Eigen::VectorXd x2_, row_weight_;
+  Eigen::VectorXd diagonal_;  // UpdateRowWeights: the Jacobian's diagonal [1/Pa scaled r]
   mutable Eigen::VectorXd heights_;
   std::vector<char> cavitated_;
   History hist_;

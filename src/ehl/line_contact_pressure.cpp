@@ -23,10 +23,10 @@ using Clock = std::chrono::steady_clock;
 void LineContactSolver::Impl::UpdateRowWeights(const Scales& sc) {
   const int n = grid_.size();
   row_weight_.setZero(n);
-  NewtonSystem ns = SystemFor(sc, 1.0);
+  SystemFor(sc, 1.0).Diagonals(&diagonal_);
   double largest = 0.0;
   for (int i = 1; i < n - 1; ++i) {
-    row_weight_[i] = std::abs(ns.Diagonal(i)) * sc.p_ref;
+    row_weight_[i] = std::abs(diagonal_[i]) * sc.p_ref;
     largest = std::max(largest, row_weight_[i]);
   }
   for (int i = 1; i < n - 1; ++i)

@@ -90,14 +90,18 @@ Eigen::MatrixXd NewtonSystem::Dense() const {
   return j;
 }
 
-double NewtonSystem::Diagonal(int i) const {
-  double d = (*a)(i, 2);
-  if (elastic)
-    for (int c = 0; c < 4; ++c) {
-      const int k = i - 2 + c;
-      if (k >= 0 && k < n) d += (*b)(i, c) * elastic->Coefficient(std::abs(k - i));
-    }
-  return d;
+void NewtonSystem::Diagonals(Eigen::VectorXd* d) const {
+  d->setZero(n);
+  // Node k = i - 2 + c is |k - i| = |c - 2| cells from i: only K_0, K_1 and K_2 enter.
+  const double k0 = elastic ? elastic->Coefficient(0) : 0.0;
+  const double k1 = elastic && n > 1 ? elastic->Coefficient(1) : 0.0;
+  const double k2 = elastic && n > 2 ? elastic->Coefficient(2) : 0.0;
+  const double kc[4] = {k2, k1, k0, k1};
+  for (int i = 1; i + 1 < n; ++i) {
+    double s = (*a)(i, 2);
+    for (int c = (i >= 2 ? 0 : 1); c < 4; ++c) s += (*b)(i, c) * kc[c];
+    (*d)[i] = s;
+  }
 }
 
 namespace {

@@ -40,8 +40,9 @@ struct NewtonSystem {
   void Apply(const Eigen::VectorXd& x, Eigen::VectorXd* y) const;
   // J as a dense matrix (O(n^2) memory).
   Eigen::MatrixXd Dense() const;
-  // dr_i/dp_i including the elastic part (node i's own column of A + B K) [1/Pa scaled r].
-  double Diagonal(int i) const;
+  // d[i] = dr_i/dp_i including the elastic part (node i's own column of A + B K) [1/Pa scaled
+  // r], i = 1 .. n-2 (d[0] = d[n-1] = 0).
+  void Diagonals(Eigen::VectorXd* d) const;
 
  private:
   mutable Eigen::VectorXd pv_, hv_;  // Apply's scratch: pressure [Pa] and film change [m]

@@ -20,26 +20,31 @@ ReynoldsSystem::ReynoldsSystem(int n, double dx_m, int upwind_order)
 
 void ReynoldsSystem::ClassicalNodes(const FluidLaws& fluid, double um, const Eigen::VectorXd& p,
                                     const Eigen::VectorXd& h) {
-  const double t = fluid.temperature_k;
-  // Cavitated or negative iterates are evaluated at p = 0 (the laws' contract), with zero
-  // pressure derivative there.
-  const DensityValue d0 = fluid.density->Evaluate(0.0, t);
-  const ViscosityValue v0 = fluid.viscosity->Evaluate(0.0, t);
+  // Each law over the whole grid in one call (one temperature, so a law can reuse its
+  // temperature factor). Cavitated or negative iterates are evaluated at p = 0 (the laws'
+  // contract), with zero pressure derivative there.
   const double s = fluid.pressure_scale;
+  law_p_.resize(n_);
+  law_t_.assign(n_, fluid.temperature_k);
+  visc_.resize(n_);
+  dens_.resize(n_);
+  if (fluid.piezoviscous) {
+    for (int k = 0; k < n_; ++k) law_p_[k] = s * std::max(p[k], 0.0);
+    fluid.viscosity->EvaluateMany(law_p_.data(), law_t_.data(), n_, visc_.data());
+  } else {
+    std::fill(visc_.begin(), visc_.end(), fluid.viscosity->Evaluate(0.0, fluid.temperature_k));
+  }
+  if (fluid.compressible) {
+    for (int k = 0; k < n_; ++k) law_p_[k] = std::max(p[k], 0.0);
+    fluid.density->EvaluateMany(law_p_.data(), law_t_.data(), n_, dens_.data());
+  } else {
+    std::fill(dens_.begin(), dens_.end(), fluid.density->Evaluate(0.0, fluid.temperature_k));
+  }
   for (int k = 0; k < n_; ++k) {
-    const double pk = std::max(p[k], 0.0);
     const bool positive = p[k] > 0.0;
-    double rho = d0.rho_kg_m3, drho = 0.0, eta = v0.eta_pa_s, deta = 0.0;
-    if (fluid.compressible && positive) {
-      const DensityValue d = fluid.density->Evaluate(pk, t);
-      rho = d.rho_kg_m3;
-      drho = d.drho_dp;
-    }
-    if (fluid.piezoviscous && positive) {
-      const ViscosityValue v = fluid.viscosity->Evaluate(s * pk, t);
-      eta = v.eta_pa_s;
-      deta = s * v.deta_dp;
-    }
+    const double rho = dens_[k].rho_kg_m3, eta = visc_[k].eta_pa_s;
+    const double drho = fluid.compressible && positive ? dens_[k].drho_dp : 0.0;
+    const double deta = fluid.piezoviscous && positive ? s * visc_[k].deta_dp : 0.0;
     const double hk = h[k], h3 = hk * hk * hk;
     e_[k] = rho * h3 / (12.0 * eta);
     de_dp_[k] = h3 / 12.0 * (drho / eta - rho * deta / (eta * eta));

@@ -16,6 +16,8 @@
 #include <Eigen/Core>
 
 #include "tehl/ehl/film_effects.hpp"
+#include "tehl/lubricant/density_model.hpp"
+#include "tehl/lubricant/viscosity_model.hpp"
 
 namespace tehl {
 class ViscosityModel;
@@ -76,6 +78,9 @@ class ReynoldsSystem {
                         const Eigen::VectorXd& h);
   Eigen::VectorXd r_, e_, de_dp_, de_dh_, fl_, dfl_dp_, flr_, st_, dst_dp_, str_;
   std::vector<double> work_;
+  std::vector<double> law_p_, law_t_;  // ClassicalNodes: the laws' arguments [Pa], [K]
+  std::vector<ViscosityValue> visc_;
+  std::vector<DensityValue> dens_;
   Eigen::Matrix<double, Eigen::Dynamic, 4> a_, b_;
 };
 

@@ -61,7 +61,8 @@ void RoelandsGammaViscosity::EvaluateMany(const double* p_pa,
                                           ViscosityValue* out) const {
   internal::EvaluateColumn(
       p_pa, T_k, n, kRoelandsPressureScale, parameters_.pressure_index,
-      [this](double base, double pz, double t) { return Finish(base, pz, t); }, out);
+      [](double) { return 0.0; },  // the temperature enters through one exp with p
+      [this](double base, double pz, double t, double) { return Finish(base, pz, t); }, out);
 }
 
 double RoelandsGammaViscosity::PressureViscosityCoefficient() const {

@@ -36,15 +36,22 @@ RoelandsViscosity::RoelandsViscosity(const Parameters& parameters) : parameters_
 
 inline ViscosityValue RoelandsViscosity::Eval(double p_pa, double T_k) const {
   const double base = 1.0 + kRoelandsPressureScale * p_pa;
-  return Finish(base, std::pow(base, parameters_.pressure_index), T_k);  // (1 + p/p0)^Z
+  // (1 + p/p0)^Z
+  return Finish(base, std::pow(base, parameters_.pressure_index), T_k, TemperatureFactor(T_k));
 }
 
-// The law from base = 1 + p/p0 and pz = base^Z.
-inline ViscosityValue RoelandsViscosity::Finish(double base, double pz, double T_k) const {
+// ((T - 138)/(T0 - 138))^-S0.
+inline double RoelandsViscosity::TemperatureFactor(double T_k) const {
   const Parameters& q = parameters_;
   const double t_rel =
       (T_k - kRoelandsTemperatureOffset) / (q.reference_temperature_k - kRoelandsTemperatureOffset);
-  const double ts = std::pow(t_rel, -q.temperature_index);  // ((T-138)/(T0-138))^-S0
+  return std::pow(t_rel, -q.temperature_index);
+}
+
+// The law from base = 1 + p/p0, pz = base^Z and ts = TemperatureFactor(T).
+inline ViscosityValue RoelandsViscosity::Finish(double base, double pz, double T_k,
+                                                double ts) const {
+  const Parameters& q = parameters_;
   const double eta = q.viscosity_pa_s * std::exp(a_ * (pz * ts - 1.0));
   // d ln(eta)/dp = a Z (1/p0) (1 + p/p0)^(Z-1) ts;  d ln(eta)/dT = -a S0 pz ts / (T - 138).
   const double dln_dp = a_ * q.pressure_index * kRoelandsPressureScale * (pz / base) * ts;
@@ -62,7 +69,9 @@ void RoelandsViscosity::EvaluateMany(const double* p_pa,
                                      ViscosityValue* out) const {
   internal::EvaluateColumn(
       p_pa, T_k, n, kRoelandsPressureScale, parameters_.pressure_index,
-      [this](double base, double pz, double t) { return Finish(base, pz, t); }, out);
+      [this](double t) { return TemperatureFactor(t); },
+      [this](double base, double pz, double t, double ts) { return Finish(base, pz, t, ts); },
+      out);
 }
 
 double RoelandsViscosity::PressureViscosityCoefficient() const {

@@ -41,7 +41,8 @@ class RoelandsViscosity final : public ViscosityModel {
 
  private:
   ViscosityValue Eval(double p_pa, double T_k) const;
-  ViscosityValue Finish(double base, double pz, double T_k) const;
+  double TemperatureFactor(double T_k) const;
+  ViscosityValue Finish(double base, double pz, double T_k, double ts) const;
   Parameters parameters_;
   double a_;  // ln eta0 + 9.67 [-]
 };

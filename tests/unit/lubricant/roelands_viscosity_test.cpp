@@ -109,6 +109,23 @@ TEST(RoelandsViscosity, EvaluateManyMatchesEvaluate) {
   }
 }
 
+// A batch reuses the temperature factor over a run of equal temperatures (an isothermal
+// grid) and the pressure factor over a run of equal pressures (a film column): runs that
+// start, end and come back must still give the point-by-point values bit for bit.
+TEST(RoelandsViscosity, EvaluateManyReusesFactorsOnlyWithinRuns) {
+  const RoelandsViscosity law = ReferenceOil();
+  const double p[] = {0.0, 0.0, 2e8, 2e8, 2e8, 9e8, 0.0, 9e8};
+  const double T[] = {313.15, 313.15, 313.15, 350.0, 313.15, 313.15, 400.0, 400.0};
+  ViscosityValue out[8];
+  law.EvaluateMany(p, T, 8, out);
+  for (int i = 0; i < 8; ++i) {
+    const ViscosityValue one = law.Evaluate(p[i], T[i]);
+    EXPECT_EQ(out[i].eta_pa_s, one.eta_pa_s) << i;
+    EXPECT_EQ(out[i].deta_dp, one.deta_dp) << i;
+    EXPECT_EQ(out[i].deta_dT, one.deta_dT) << i;
+  }
+}
+
 TEST(RoelandsViscosity, RejectsViscosityBelowEtaInfinity) {
   // Roelands: eta_inf = exp(-9.67) = 6.31e-5 Pa s; below it eta would fall with pressure.
   try {
