@@ -11,9 +11,8 @@
 //   dr_i/dp_j = A_ij + sum_k B_ik dh_k/dp_j,   dh_k/dp_j = K_kj (elastic matrix).
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "tehl/ehl/film_effects.hpp"
 #include "tehl/lubricant/density_model.hpp"

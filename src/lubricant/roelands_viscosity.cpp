@@ -49,7 +49,9 @@ inline double RoelandsViscosity::TemperatureFactor(double T_k) const {
 }
 
 // The law from base = 1 + p/p0, pz = base^Z and ts = TemperatureFactor(T).
-inline ViscosityValue RoelandsViscosity::Finish(double base, double pz, double T_k,
+inline ViscosityValue RoelandsViscosity::Finish(double base,
+                                                double pz,
+                                                double T_k,
                                                 double ts) const {
   const Parameters& q = parameters_;
   const double eta = q.viscosity_pa_s * std::exp(a_ * (pz * ts - 1.0));
@@ -70,8 +72,7 @@ void RoelandsViscosity::EvaluateMany(const double* p_pa,
   internal::EvaluateColumn(
       p_pa, T_k, n, kRoelandsPressureScale, parameters_.pressure_index,
       [this](double t) { return TemperatureFactor(t); },
-      [this](double base, double pz, double t, double ts) { return Finish(base, pz, t, ts); },
-      out);
+      [this](double base, double pz, double t, double ts) { return Finish(base, pz, t, ts); }, out);
 }
 
 double RoelandsViscosity::PressureViscosityCoefficient() const {
