@@ -101,7 +101,8 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
   }
   MeasureFactors();
   y_ = bc;
-  for (int c = 0; c < 3; ++c) Substitute(y_.col(c).data());
+  for (int c = 0; c < 3; ++c)  // the H0 column has no core entries: its solve is zero
+    if (!y_.col(c).isZero(0.0)) Substitute(y_.col(c).data());
   // S = D - B_r C^{-1} B_c, with B_r acting on the P rows of Y.
   Eigen::Matrix3d s = d;
   for (int r = 0; r < 3; ++r)
@@ -116,7 +117,10 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
     return false;
   }
   schur_inv_ = lu.inverse();
+  yp_.resize(m, 3);
+  for (int k = 0; k < m; ++k) yp_.row(k) = y_.row(2 * k + 1);
   work_.resize(size_);
+  up_.resize(m);
   return true;
 }
 
@@ -253,17 +257,11 @@ void BandedFilmPreconditioner::Solve(const Eigen::VectorXd& x, Eigen::VectorXd* 
     u[2 * k + 1] = 0.0;
   }
   Substitute(u);
-  Eigen::Vector3d g(0.0, 0.0, x[m]);
-  for (int r = 0; r < 3; ++r) {
-    double acc = 0;
-    for (int k = 0; k < m; ++k) acc += border_(r, k) * u[2 * k + 1];
-    g[r] -= acc;
-  }
+  for (int k = 0; k < m; ++k) up_[k] = u[2 * k + 1];  // the P unknowns
+  const Eigen::Vector3d g = Eigen::Vector3d(0.0, 0.0, x[m]) - border_ * up_;
   const Eigen::Vector3d s = schur_inv_ * g;
   y->resize(m + 1);
-  for (int k = 0; k < m; ++k)
-    (*y)[k] = u[2 * k + 1] - (y_(2 * k + 1, 0) * s[0] + y_(2 * k + 1, 1) * s[1] +
-                              y_(2 * k + 1, 2) * s[2]);
+  y->head(m) = up_ - yp_ * s;
   (*y)[m] = s[2];
 }
 

@@ -45,9 +45,10 @@ class BandedFilmPreconditioner {
   std::vector<int> u_len_, l_len_;
   std::vector<std::size_t> offset_;
   Eigen::MatrixXd y_;          // C^{-1} B_c (size_ x 3)
+  Eigen::MatrixXd yp_;         // its P rows (n - 2 x 3)
   Eigen::MatrixXd border_;     // B_r restricted to the P columns (3 x (n - 2))
   Eigen::Matrix3d schur_inv_;  // (D - B_r C^{-1} B_c)^{-1}
-  mutable Eigen::VectorXd work_;
+  mutable Eigen::VectorXd work_, up_;
 };
 
 }  // namespace tehl::internal
