@@ -11,9 +11,15 @@ namespace {
 
 // y[i - 1] = rs[i] sum_c (A(i, c) p[i - 2 + c] + B(i, c) h[i - 2 + c]), i = 2 .. m: branch-free
 // so that it vectorizes across rows; cloned for x86-64-v3 (AVX2 + FMA).
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void StencilRows(
-    int m, const double* a, Eigen::Index lda, const double* b, Eigen::Index ldb,
-    const double* pv, const double* hv, const double* rs, double* y) {
+__attribute__((target_clones("arch=x86-64-v3", "default"))) void StencilRows(int m,
+                                                                             const double* a,
+                                                                             Eigen::Index lda,
+                                                                             const double* b,
+                                                                             Eigen::Index ldb,
+                                                                             const double* pv,
+                                                                             const double* hv,
+                                                                             const double* rs,
+                                                                             double* y) {
   const double *a_0 = a, *a_1 = a + lda, *a_2 = a + 2 * lda, *a_3 = a + 3 * lda;
   const double *b_0 = b, *b_1 = b + ldb, *b_2 = b + 2 * ldb, *b_3 = b + 3 * ldb;
   for (int i = 2; i <= m; ++i) {
