@@ -1,7 +1,7 @@
 // The pieces of one GMRES iteration of the Newton-Krylov solver at n nodes, on the random
 // Newton system of tests/support/random_newton_system.hpp (real steel kernel, random
 // order-one stencils, the last fifth of the rows cavitated): the band LU substitution of the
-// fine level, the coarse correction, one Jacobian product (FFT + stencil) and one FFT
+// fine level (both factorization paths), the coarse correction, one Jacobian product (FFT + stencil) and one FFT
 // convolution alone. Each reported as a time and in FFT convolutions of the same n
 // (`per_fft`), so that the ratios come from one process. docs/performance.md uses them.
 #include <benchmark/benchmark.h>
@@ -48,11 +48,20 @@ void Measure(benchmark::State& state, const tehl::testing::RandomNewtonSystem& r
   state.counters["per_fft"] = s / fft_s;
 }
 
+// The fine level's factorization path from the second argument: 1 = interchanges within
+// node pairs (threshold 0, so that the random system takes it: the EHL systems take it at the
+// default threshold), 0 = LAPACK's dgbtrf. Reported as `paired`.
+tehl::internal::BandedFilmPreconditioner FinePreconditioner(const benchmark::State& state) {
+  tehl::internal::BandedFilmPreconditioner pre;
+  pre.set_pair_pivot_threshold(state.range(1) == 1 ? 0.0 : -1.0);
+  return pre;
+}
+
 // Fine level: one substitution with the band LU (half-band 8, the default).
 void BM_BandSolve(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   tehl::testing::RandomNewtonSystem rs(n, 3, tehl::FftPlanEffort::kMeasure);
-  tehl::internal::BandedFilmPreconditioner pre;
+  tehl::internal::BandedFilmPreconditioner pre = FinePreconditioner(state);
   std::string why;
   if (!pre.Factorize(rs.sys, 8, &why)) state.SkipWithError(why.c_str());
   const Eigen::VectorXd x = rs.RandomVector();
@@ -61,15 +70,18 @@ void BM_BandSolve(benchmark::State& state) {
     pre.Solve(x, &y);
     benchmark::DoNotOptimize(y.data());
   });
+  state.counters["paired"] = pre.paired();
 }
 
-// Fine level: the factorization (dgbtrf and the packing of the factors).
+// Fine level: the whole factorization (assembly, band LU, rearranging the factors, the
+// border's Schur complement).
 void BM_BandFactorize(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   tehl::testing::RandomNewtonSystem rs(n, 3, tehl::FftPlanEffort::kMeasure);
-  tehl::internal::BandedFilmPreconditioner pre;
+  tehl::internal::BandedFilmPreconditioner pre = FinePreconditioner(state);
   std::string why;
   Measure(state, rs, [&] { benchmark::DoNotOptimize(pre.Factorize(rs.sys, 8, &why)); });
+  state.counters["paired"] = pre.paired();
 }
 
 // Coarse level: y = Z E^{-1} W^T x with about 128 coarse pressures.
@@ -102,8 +114,12 @@ void Sizes(benchmark::internal::Benchmark* b) {
   for (int n = 513; n <= 16385; n = 2 * n - 1) b->Arg(n);
 }
 
-BENCHMARK(BM_BandSolve)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_BandFactorize)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
+void SizesAndPaths(benchmark::internal::Benchmark* b) {
+  for (int n = 513; n <= 16385; n = 2 * n - 1) b->Args({n, 0})->Args({n, 1});
+}
+
+BENCHMARK(BM_BandSolve)->Apply(SizesAndPaths)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BandFactorize)->Apply(SizesAndPaths)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CoarseApply)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_JacobianProduct)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
 

@@ -23,24 +23,7 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
   size_ = 2 * m;
   kl_ = std::max(4, 2 * band);
   ku_ = std::max(3, 2 * band);
-  ldab_ = 2 * kl_ + ku_ + 1;
-  ab_.assign(static_cast<std::size_t>(ldab_) * size_, 0.0);
-  ipiv_.resize(size_);
-  Eigen::MatrixXd bc = Eigen::MatrixXd::Zero(size_, 3);  // columns H_0, H_{n-1}, H0
-  auto add = [&](int row, int col, double v) {
-    ab_[static_cast<std::size_t>(col) * ldab_ + (kl_ + ku_ + row - col)] += v;
-  };
-  auto hcol = [](int k) { return 2 * (k - 1); };      // core column of H_k, k = 1 .. m
-  auto pcol = [](int k) { return 2 * (k - 1) + 1; };  // core column of P_k
-  // Film change H_k in row `row` with weight v: core column or border column.
-  auto add_h = [&](int row, int k, double v) {
-    if (k == 0)
-      bc(row, 0) += v;
-    else if (k == n - 1)
-      bc(row, 1) += v;
-    else
-      add(row, hcol(k), v);
-  };
+  Eigen::MatrixXd bc;  // columns H_0, H_{n-1}, H0
   // kc_q = (p_ref/h_ref) K_q and prefix sums pk[q + 1] = sum_{d <= q} kc_d.
   const double ks = sys.p_ref / sys.h_ref;
   std::vector<double> kc(n, 0.0), pk(n + 1, 0.0);
@@ -53,35 +36,55 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
     if (lo > c) return pk[hi - c + 1] - pk[lo - c];
     return pk[c - lo + 1] + pk[hi - c + 1] - kc[0];
   };
-  for (int i = 1; i <= m; ++i) {
-    const int row = 2 * (i - 1);
-    if (sys.cavitated[i]) {
-      add(row, pcol(i), 1.0);
-    } else {
-      const double rs = (*sys.row_scale)[i];
-      for (int q = 0; q < 4; ++q) {
-        const int k = i - 2 + q;
-        if (k < 0 || k >= n) continue;
-        if (k >= 1 && k <= m) add(row, pcol(k), rs * sys.p_ref * (*sys.a)(i, q));
-        add_h(row, k, rs * sys.h_ref * (*sys.b)(i, q));
+  // The second-differenced kernel d2[q] = kc_|q-1| - 2 kc_q + kc_q+1 (Toeplitz: the entry of
+  // the film row of node i for P_j, q = |i - j| <= band).
+  std::vector<double> d2(band + 1);
+  for (int q = 0; q <= band; ++q)
+    d2[q] = kc[std::abs(q - 1)] - 2.0 * kc[q] + (q + 1 < n ? kc[q + 1] : 0.0);
+  // The core (through `add`) and the border columns (into bc), once per storage tried.
+  auto hcol = [](int k) { return 2 * (k - 1); };      // core column of H_k, k = 1 .. m
+  auto pcol = [](int k) { return 2 * (k - 1) + 1; };  // core column of P_k
+  auto assemble = [&](auto&& add) {
+    bc.setZero(size_, 3);
+    // Film change H_k in row `row` with weight v: core column or border column.
+    auto add_h = [&](int row, int k, double v) {
+      if (k == 0)
+        bc(row, 0) += v;
+      else if (k == n - 1)
+        bc(row, 1) += v;
+      else
+        add(row, hcol(k), v);
+    };
+    for (int i = 1; i <= m; ++i) {
+      const int row = 2 * (i - 1);
+      if (sys.cavitated[i]) {
+        add(row, pcol(i), 1.0);
+      } else {
+        const double rs = (*sys.row_scale)[i];
+        for (int q = 0; q < 4; ++q) {
+          const int k = i - 2 + q;
+          if (k < 0 || k >= n) continue;
+          if (k >= 1 && k <= m) add(row, pcol(k), rs * sys.p_ref * (*sys.a)(i, q));
+          add_h(row, k, rs * sys.h_ref * (*sys.b)(i, q));
+        }
       }
+      // Film row of node i: a second difference of H against the truncated kernel.
+      const int frow = row + 1;
+      add_h(frow, i - 1, 1.0);
+      add_h(frow, i, -2.0);
+      add_h(frow, i + 1, 1.0);
+      const int lo = std::max(1, i - band), hi = std::min(m, i + band);
+      double in_band = 0.0;
+      for (int j = lo; j <= hi; ++j) {
+        const double dij = d2[std::abs(i - j)];
+        in_band += dij;
+        if (j != i) add(frow, pcol(j), -dij);
+      }
+      const double total = row_sum(i - 1) - 2.0 * row_sum(i) + row_sum(i + 1);
+      const double dii = kc[1] - 2.0 * kc[0] + kc[1];
+      add(frow, pcol(i), -(dii + (total - in_band)));
     }
-    // Film row of node i: a second difference of H against the truncated kernel.
-    const int frow = row + 1;
-    add_h(frow, i - 1, 1.0);
-    add_h(frow, i, -2.0);
-    add_h(frow, i + 1, 1.0);
-    const int lo = std::max(1, i - band), hi = std::min(m, i + band);
-    double in_band = 0.0;
-    for (int j = lo; j <= hi; ++j) {
-      const double dij = kc[std::abs(i - 1 - j)] - 2.0 * kc[std::abs(i - j)] + kc[std::abs(i + 1 - j)];
-      in_band += dij;
-      if (j != i) add(frow, pcol(j), -dij);
-    }
-    const double total = row_sum(i - 1) - 2.0 * row_sum(i) + row_sum(i + 1);
-    const double dii = kc[1] - 2.0 * kc[0] + kc[1];
-    add(frow, pcol(i), -(dii + (total - in_band)));
-  }
+  };
   // Border rows on the P columns: the exact film rows of both ends and the load row.
   border_.resize(3, m);
   const double wload = sys.dx * sys.p_ref / sys.load;
@@ -92,14 +95,31 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
   }
   Eigen::Matrix3d d;
   d << 1, 0, -1, 0, 1, -1, 0, 0, 0;
-  int info = 0;
-  dgbtrf_(&size_, &size_, &kl_, &ku_, ab_.data(), &ldab_, ipiv_.data(), &info);
-  if (info != 0) {
-    *why = "newton_krylov: banded LU of the preconditioner failed (dgbtrf info " +
-           std::to_string(info) + ")";
-    return false;
+  // First the band LU pivoting within node pairs (pair_pivoted_band_lu.hpp), whose
+  // substitution is several times faster; LAPACK's dgbtrf if a pivot falls below a tenth of
+  // its column.
+  paired_ = false;
+  if (pair_threshold_ >= 0) {
+    pair_.Reset(size_, kl_, ku_);
+    assemble([&](int row, int col, double v) { pair_.Add(row, col, v); });
+    paired_ = pair_.Factorize(pair_threshold_);
   }
-  MeasureFactors();
+  if (!paired_) {
+    ldab_ = 2 * kl_ + ku_ + 1;
+    ab_.assign(static_cast<std::size_t>(ldab_) * size_, 0.0);
+    ipiv_.resize(size_);
+    assemble([&](int row, int col, double v) {
+      ab_[static_cast<std::size_t>(col) * ldab_ + (kl_ + ku_ + row - col)] += v;
+    });
+    int info = 0;
+    dgbtrf_(&size_, &size_, &kl_, &ku_, ab_.data(), &ldab_, ipiv_.data(), &info);
+    if (info != 0) {
+      *why = "newton_krylov: banded LU of the preconditioner failed (dgbtrf info " +
+             std::to_string(info) + ")";
+      return false;
+    }
+    MeasureFactors();
+  }
   y_ = bc;
   for (int c = 0; c < 3; ++c)  // the H0 column has no core entries: its solve is zero
     if (!y_.col(c).isZero(0.0)) Substitute(y_.col(c).data());
@@ -112,7 +132,7 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
       s(r, c) -= acc;
     }
   Eigen::FullPivLU<Eigen::Matrix3d> lu(s);
-  if (info != 0 || !lu.isInvertible()) {
+  if (!lu.isInvertible()) {
     *why = "newton_krylov: the border of the banded preconditioner is singular";
     return false;
   }
@@ -244,6 +264,10 @@ void BandedFilmPreconditioner::MeasureFactors() {
 // packed factors. Written out because the reference BLAS behind dgbtrs spends more on one
 // call per column (dger, dswap, dtbsv) than on the arithmetic of these short columns.
 void BandedFilmPreconditioner::Substitute(double* b) const {
+  if (paired_) {
+    pair_.Solve(b);
+    return;
+  }
   SubstitutePacked(size_, ipiv_.data(), l_len_.data(), u_len_.data(), offset_.data(),
                    packed_.data(), inv_diag_.data(), b);
 }

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "ehl/pair_pivoted_band_lu.hpp"
+
 namespace tehl::internal {
 
 struct NewtonSystem;
@@ -30,11 +32,19 @@ class BandedFilmPreconditioner {
   bool Factorize(const NewtonSystem& system, int band, std::string* why);
   // y ~ J^{-1} x for vectors of size n - 1 (the Newton unknowns).
   void Solve(const Eigen::VectorXd& x, Eigen::VectorXd* y) const;
+  // The core's LU first tries interchanges within node pairs (pair_pivoted_band_lu.hpp) and
+  // falls back on LAPACK's dgbtrf when a pivot is below `t` times its column's largest entry
+  // below it; t < 0: dgbtrf only. Default 0.1.
+  void set_pair_pivot_threshold(double t) { pair_threshold_ = t; }
+  bool paired() const { return paired_; }  // the last factorization pivoted within pairs
 
  private:
   void Substitute(double* b) const;  // b <- (core)^{-1} b with the LU factors in ab_
   void MeasureFactors();
   int n_ = 0, size_ = 0, kl_ = 0, ku_ = 0, ldab_ = 0;  // core size 2 (n - 2)
+  double pair_threshold_ = 0.1;
+  PairPivotedBandLu pair_;     // the core's LU with interchanges inside node pairs ...
+  bool paired_ = false;        // ... if its pivots held; otherwise LAPACK's:
   std::vector<double> ab_;     // LAPACK band storage of the core, then its LU factors
   std::vector<int> ipiv_;
   // The factors packed column by column for the substitution (MeasureFactors): for column j,

@@ -25,5 +25,6 @@ list(APPEND TEHL_SOURCES
   src/ehl/far_history.cpp
   src/ehl/film_augmented_preconditioner.cpp
   src/ehl/coarse_correction.cpp
+  src/ehl/pair_pivoted_band_lu.cpp
   src/ehl/banded_film_preconditioner.cpp
 )

@@ -23,10 +23,23 @@ namespace {
 // eps = 2.2e-16 that is 7e-12, so 1e-10 leaves room for the growth factor (measured 2.5e-14
 // and 1.1e-13). The forward error against dense LU is bounded by cond(J) (<= 5e4 at these n,
 // film_augmented_preconditioner_test.cpp) times that: 5e-6.
+// Both factorizations of the core: interchanges within node pairs (accepting any nonzero
+// pivot, so that this random system takes that path) and LAPACK's dgbtrf.
+template <int kThresholdTimes10>
+struct BandedWithThreshold : internal::BandedFilmPreconditioner {
+  BandedWithThreshold() { set_pair_pivot_threshold(0.1 * kThresholdTimes10); }
+  bool Factorize(const internal::NewtonSystem& s, int band, std::string* why) {
+    const bool ok = internal::BandedFilmPreconditioner::Factorize(s, band, why);
+    EXPECT_EQ(paired(), kThresholdTimes10 >= 0);
+    return ok;
+  }
+};
+
 TEST(BandedFilmPreconditioner, FullBandSolveIsADirectSolveOfTheJacobian) {
-  using internal::BandedFilmPreconditioner;
-  testing::ExpectDirectSolveOfJ<BandedFilmPreconditioner>(300, 1e-10, 5e-6);
-  testing::ExpectDirectSolveOfJ<BandedFilmPreconditioner>(513, 1e-10, 5e-6);
+  testing::ExpectDirectSolveOfJ<BandedWithThreshold<0>>(300, 1e-10, 5e-6);
+  testing::ExpectDirectSolveOfJ<BandedWithThreshold<0>>(513, 1e-10, 5e-6);
+  testing::ExpectDirectSolveOfJ<BandedWithThreshold<-10>>(300, 1e-10, 5e-6);
+  testing::ExpectDirectSolveOfJ<BandedWithThreshold<-10>>(513, 1e-10, 5e-6);
 }
 
 // The coarse matrix E = W^T J Z built from the hat-smoothed kernel equals the product formed
