@@ -96,8 +96,8 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
   Eigen::Matrix3d d;
   d << 1, 0, -1, 0, 1, -1, 0, 0, 0;
   // First the band LU pivoting within node pairs (pair_pivoted_band_lu.hpp), whose
-  // substitution is several times faster; LAPACK's dgbtrf if a pivot falls below a tenth of
-  // its column.
+  // substitution is about twice as fast (docs/performance.md); LAPACK's dgbtrf if one of its
+  // pivots falls below the threshold (a tenth of its column by default).
   paired_ = false;
   if (pair_threshold_ >= 0) {
     pair_.Reset(size_, kl_, ku_);

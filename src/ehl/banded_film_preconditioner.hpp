@@ -8,10 +8,12 @@
 //   border rows:  H_0 - H0 - (p_ref/h_ref) sum_j K_j P_j,  H_{n-1} - H0 - ...,  the load row.
 // In the node order (H_k, P_k), k = 1 .. n-2, the core is a band matrix (half-bands
 // max(4, 2 band) below and max(3, 2 band) above) bordered by three rows (the two exact film
-// rows, the load row) and three columns (H_0, H_{n-1}, H0). It is factorized by LAPACK's
-// banded LU with partial pivoting (dgbtrf) and the 3 x 3 Schur complement of the border:
-// O(n band^2) to factorize and O(n band) to solve, with no fill beyond the band. What the
-// truncated kernel misses is smooth and long-ranged: coarse_correction.hpp supplies it.
+// rows, the load row) and three columns (H_0, H_{n-1}, H0). The core is factorized by the
+// band LU with interchanges inside node pairs (pair_pivoted_band_lu.hpp), or by LAPACK's
+// banded LU with partial pivoting (dgbtrf) when a pivot of the former falls below the
+// threshold, and the border by its 3 x 3 Schur complement: O(n band^2) to factorize and
+// O(n band) to solve, with no fill beyond the band. What the truncated kernel misses is
+// smooth and long-ranged: coarse_correction.hpp supplies it.
 #pragma once
 
 #include <Eigen/Core>
