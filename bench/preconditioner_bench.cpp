@@ -1,9 +1,10 @@
 // The pieces of one GMRES iteration of the Newton-Krylov solver at n nodes, on the random
 // Newton system of tests/support/random_newton_system.hpp (real steel kernel, random
 // order-one stencils, the last fifth of the rows cavitated): the band LU substitution of the
-// fine level (both factorization paths), the coarse correction, one Jacobian product (FFT + stencil) and one FFT
-// convolution alone. Each reported as a time and in FFT convolutions of the same n
-// (`per_fft`), so that the ratios come from one process. docs/performance.md uses them.
+// fine level (both factorization paths), the coarse correction, one Jacobian product (FFT +
+// stencil) and one FFT convolution alone. Each reported as a time and in FFT convolutions of
+// the same n (`per_fft`), so that the ratios come from one process. docs/performance.md uses
+// them.
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Core>

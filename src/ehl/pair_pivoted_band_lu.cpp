@@ -87,8 +87,8 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void BackBlocks(
 // Right-looking elimination in the band storage of PairPivotedBandLu (A(i, j) at
 // j ld + up + i - j, kl + 1 = `below` rows under the diagonal, ku + 1 = `above` over it).
 // Returns the number of interchanged pairs, or -1 if a pivot fails the threshold.
-__attribute__((target_clones("arch=x86-64-v3", "default"))) int Eliminate(int n,
-    int below, int above, int ld, int up, double* a, char* swapped, double threshold) {
+__attribute__((target_clones("arch=x86-64-v3", "default"))) int Eliminate(
+    int n, int below, int above, int ld, int up, double* a, char* swapped, double threshold) {
   auto at = [&](int i, int j) -> double& {
     return a[static_cast<std::size_t>(j) * ld + (up + i - j)];
   };
@@ -132,8 +132,8 @@ void PairPivotedBandLu::Reset(int n, int kl, int ku) {
   n_ = n;
   kl_ = kl;
   ku_ = ku;
-  up_ = ku + 1;            // room for a row moved up by its pair's interchange
-  ld_ = up_ + kl + 2;      // diagonal, then kl + 1 rows below
+  up_ = ku + 1;        // room for a row moved up by its pair's interchange
+  ld_ = up_ + kl + 2;  // diagonal, then kl + 1 rows below
   a_.assign(static_cast<std::size_t>(ld_) * n, 0.0);
 }
 
