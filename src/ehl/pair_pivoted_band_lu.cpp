@@ -2,27 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <utility>
 
 namespace tehl::internal {
 namespace {
 
-// The helpers below are inlined into the clones; GCC's note that a 32-byte vector passed by
-// value has another ABI without AVX concerns calls that never happen.
-#pragma GCC diagnostic ignored "-Wpsabi"
-
 // Four doubles as one GCC vector: AVX2 registers in the x86-64-v3 clone, pairs of SSE2
-// registers in the default one.
+// registers in the default one. V4u is the same vector at any double's address (unaligned
+// loads and stores through a pointer cast). Written inline in the kernels, without helper
+// functions: a function taking or returning V4 has another ABI without AVX, which clang
+// rejects in the default clone.
 typedef double V4 __attribute__((vector_size(32)));
-
-inline V4 Load(const double* p) {
-  V4 v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-inline void Store(double* p, V4 v) { std::memcpy(p, &v, sizeof v); }
-inline V4 Splat(double x) { return V4{x, x, x, x}; }
+typedef double V4u __attribute__((vector_size(32), aligned(8), may_alias));
 
 // Unit lower triangle, blocks of four columns j0 .. j0 + 3 (j0 = 0, 4, ...): the block's own
 // unknowns by a 4 x 4 triangular solve, then rows j0 + 4 ... j0 + 3 + 4 lq in chunks of four.
@@ -44,13 +35,16 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void ForwardBlocks(
     y[1] = y1;
     y[2] = y2;
     y[3] = y3;
-    const V4 s0 = Splat(y0), s1 = Splat(y1), s2 = Splat(y2), s3 = Splat(y3);
+    const V4 s0 = {y0, y0, y0, y0}, s1 = {y1, y1, y1, y1};
+    const V4 s2 = {y2, y2, y2, y2}, s3 = {y3, y3, y3, y3};
     double* r = y + 4;
     for (int q = 0; q < lq; ++q) {
       const int o = 4 * q;
-      V4 acc = Load(r + o) - Load(l0 + 3 + o) * s0 - Load(l1 + 2 + o) * s1;
-      acc = acc - Load(l2 + 1 + o) * s2;
-      Store(r + o, acc - Load(l3 + o) * s3);
+      V4 acc = *reinterpret_cast<const V4u*>(r + o);
+      acc = acc - *reinterpret_cast<const V4u*>(l0 + 3 + o) * s0;
+      acc = acc - *reinterpret_cast<const V4u*>(l1 + 2 + o) * s1;
+      acc = acc - *reinterpret_cast<const V4u*>(l2 + 1 + o) * s2;
+      *reinterpret_cast<V4u*>(r + o) = acc - *reinterpret_cast<const V4u*>(l3 + o) * s3;
     }
   }
 }
@@ -73,13 +67,16 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void BackBlocks(
     x[-1] = x1;
     x[-2] = x2;
     x[-3] = x3;
-    const V4 s0 = Splat(x0), s1 = Splat(x1), s2 = Splat(x2), s3 = Splat(x3);
+    const V4 s0 = {x0, x0, x0, x0}, s1 = {x1, x1, x1, x1};
+    const V4 s2 = {x2, x2, x2, x2}, s3 = {x3, x3, x3, x3};
     for (int q = 0; q < nq; ++q) {
       const int k = s - 7 - 4 * q;  // entry of column j0 for row j0 - 7 - 4 q
       double* r = x - 7 - 4 * q;
-      V4 acc = Load(r) - Load(u0 + k) * s0 - Load(u1 + k + 1) * s1;
-      acc = acc - Load(u2 + k + 2) * s2;
-      Store(r, acc - Load(u3 + k + 3) * s3);
+      V4 acc = *reinterpret_cast<const V4u*>(r);
+      acc = acc - *reinterpret_cast<const V4u*>(u0 + k) * s0;
+      acc = acc - *reinterpret_cast<const V4u*>(u1 + k + 1) * s1;
+      acc = acc - *reinterpret_cast<const V4u*>(u2 + k + 2) * s2;
+      *reinterpret_cast<V4u*>(r) = acc - *reinterpret_cast<const V4u*>(u3 + k + 3) * s3;
     }
   }
 }
