@@ -38,9 +38,10 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
   };
   // The second-differenced kernel d2[q] = kc_|q-1| - 2 kc_q + kc_q+1 (Toeplitz: the entry of
   // the film row of node i for P_j, q = |i - j| <= band).
-  std::vector<double> d2(band + 1);
-  for (int q = 0; q <= band; ++q)
-    d2[q] = kc[std::abs(q - 1)] - 2.0 * kc[q] + (q + 1 < n ? kc[q + 1] : 0.0);
+  // |i - j| < m, so q + 1 <= m < n.
+  const int qmax = std::min(band, m - 1);
+  std::vector<double> d2(qmax + 1);
+  for (int q = 0; q <= qmax; ++q) d2[q] = kc[std::abs(q - 1)] - 2.0 * kc[q] + kc[q + 1];
   // The core (through `add`) and the border columns (into bc), once per storage tried.
   auto hcol = [](int k) { return 2 * (k - 1); };      // core column of H_k, k = 1 .. m
   auto pcol = [](int k) { return 2 * (k - 1) + 1; };  // core column of P_k
