@@ -8,6 +8,8 @@
 #include <sstream>
 #include <toml.hpp>
 
+#include "base/toml_guard.hpp"
+
 namespace tehl::internal {
 namespace {
 
@@ -105,77 +107,6 @@ Value ParseDefault(const KeySpec& k) {
     }
   }
   return std::monostate{};
-}
-
-// toml11 parses (and destroys) nested arrays and inline tables recursively, so a few
-// thousand levels overflow the stack, and its time grows with the square of the parts of a
-// dotted key ("a.a.a..." or "[a.a.a...]"): a 60 kB key takes minutes. No tehl file nests deeper
-// than an array inside an inline table, and no key has more than three parts, so the text is
-// scanned first. Strings and comments are skipped (brackets and dots in them do not count);
-// what is not valid TOML is left to the parser.
-constexpr int kMaxNesting = 32;   // arrays and inline tables
-constexpr int kMaxKeyDots = 32;   // dots in one key or table header
-
-struct TooDeep {
-  int line = 0;  // 0: nothing too deep
-  std::string what;
-};
-
-TooDeep FindTooDeep(const std::string& s) {
-  std::string open;     // the open brackets, '[' or '{'
-  bool in_key = true;   // a key or a table header is being read
-  bool line_start = true;
-  int dots = 0, line = 1;
-  for (size_t i = 0; i < s.size(); ++i) {
-    const char c = s[i];
-    if (c == '\n') {
-      ++line;
-      line_start = true;
-      if (open.empty()) {
-        in_key = true;
-        dots = 0;
-      }
-      continue;
-    }
-    if (c == ' ' || c == '\t' || c == '\r') continue;
-    const bool header = line_start && open.empty() && c == '[';
-    line_start = false;
-    if (c == '#') {
-      while (i + 1 < s.size() && s[i + 1] != '\n') ++i;
-    } else if (c == '"' || c == '\'') {
-      const std::string close(s.compare(i, 3, std::string(3, c)) == 0 ? 3 : 1, c);
-      for (i += close.size(); i < s.size() && s.compare(i, close.size(), close) != 0; ++i) {
-        if (c == '"' && s[i] == '\\' && i + 1 < s.size()) ++i;  // escaped character
-        if (s[i] == '\n') ++line;
-      }
-      i += close.size() - 1;
-    } else if (c == '[' || c == '{') {
-      open += c;
-      if (static_cast<int>(open.size()) > kMaxNesting)
-        return {line, "arrays or inline tables nested more than " + std::to_string(kMaxNesting) +
-                          " levels deep"};
-      if (c == '{') {
-        in_key = true;
-        dots = 0;
-      } else if (header) {
-        in_key = true;
-      } else if (!(s[i - 1] == '[' && open.size() == 2)) {  // "[[" keeps a header a header
-        in_key = false;
-      }
-    } else if (c == ']' || c == '}') {
-      if (!open.empty()) open.pop_back();
-    } else if (c == ',') {
-      if (!open.empty() && open.back() == '{') {
-        in_key = true;
-        dots = 0;
-      }
-    } else if (c == '=') {
-      in_key = false;
-    } else if (c == '.' && in_key && ++dots > kMaxKeyDots) {
-      return {line, "a key with more than " + std::to_string(kMaxKeyDots + 1) + " dotted parts"};
-    }
-  }
-  return {};
 }
 
 }  // namespace
@@ -525,9 +456,8 @@ Document Document::ReadString(const Schema& schema, const std::string& text,
   Document doc;
   doc.schema_ = &schema;
   doc.path_ = name;
-  if (const TooDeep deep = FindTooDeep(text); deep.line > 0) {
-    doc.problems_.Add({name, deep.line, "(syntax)", "", "not read: " + deep.what,
-                       "tables of keys with numbers, strings, booleans and arrays of numbers"});
+  if (const TomlTextProblem bad = FindUnsafeTomlText(text); bad.line > 0) {
+    doc.problems_.Add({name, bad.line, "(syntax)", "", "not read: " + bad.what, bad.allowed});
     return doc;
   }
   toml::value root;

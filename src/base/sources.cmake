@@ -3,4 +3,5 @@ list(APPEND TEHL_SOURCES
   src/base/error.cpp
   src/base/units.cpp
   src/base/schema.cpp
+  src/base/toml_guard.cpp
 )

@@ -4,10 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <set>
+#include <sstream>
 #include <toml.hpp>
 
 #include "base/schema.hpp"
+#include "base/toml_guard.hpp"
 #include "drive/motor_schema.hpp"
 #include "tehl/units.hpp"
 
@@ -114,7 +117,13 @@ Schema BuildSchema(const std::map<std::string, std::vector<std::string>>& names)
 std::map<std::string, std::vector<std::string>> ScanNames(const std::string& path) {
   std::map<std::string, std::vector<std::string>> names;
   try {
-    const toml::value root = toml::parse(path);
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    // Text the parser does not survive is left to the Document, which reports it.
+    if (!in || FindUnsafeTomlText(text.str()).line > 0) return names;
+    std::istringstream parse_in(text.str());
+    const toml::value root = toml::parse(parse_in, path);
     if (!root.is_table()) return names;
     for (const char* g : kGroups) {
       if (!root.contains(g) || !root.at(g).is_table()) continue;
