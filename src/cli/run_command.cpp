@@ -6,11 +6,53 @@
 
 #include "cli/commands.hpp"
 #include "scene/case_reader.hpp"
+#include "tehl/ehl/outlet_spike.hpp"
 #include "tehl/scene/contact_scene.hpp"
 #include "tehl/scene/mesh_cycle_scene.hpp"
 
 namespace tehl::cli {
 namespace {
+
+// The outlet spike's height converges only once the grid resolves it (docs/accuracy.md,
+// include/tehl/ehl/outlet_spike.hpp): say so when it spans fewer than kSpikeResolvedCells.
+constexpr const char* kSpikeAdvice =
+    "p_max (and a temperature peak on the spike) is not grid-converged: more "
+    "[numerics] grid_points resolve it (docs/results.md)";
+
+void NoteContactSpike(const OutletSpike& spike) {
+  if (spike.resolved()) return;
+  std::printf(
+      "note: the outlet pressure spike (%.4g GPa at x = %.4g mm) spans %.1f cells at half its "
+      "height above the dip before it, fewer than %.0f: %s\n",
+      spike.pressure_pa * 1e-9, spike.x_m * 1e3, spike.width_cells, kSpikeResolvedCells,
+      kSpikeAdvice);
+}
+
+void NoteCycleSpikes(const MeshCycleResult& r, size_t converged_steps) {
+  if (r.x_m.size() < 2) return;
+  const double dx = r.x_m[1] - r.x_m[0];
+  int narrow = 0;
+  OutletSpike narrowest;
+  size_t at = 0;
+  for (size_t k = 0; k < converged_steps && k < r.p_pa.size(); ++k) {
+    const Eigen::Map<const Eigen::VectorXd> p(r.p_pa[k].data(),
+                                              static_cast<Eigen::Index>(r.p_pa[k].size()));
+    const OutletSpike s = FindOutletSpike(p, r.x_m.front(), dx);
+    if (s.resolved()) continue;
+    ++narrow;
+    if (narrow == 1 || s.width_cells < narrowest.width_cells) {
+      narrowest = s;
+      at = k;
+    }
+  }
+  if (narrow == 0) return;
+  std::printf(
+      "note: in %d of the %zu films along the path (A and the steps) the outlet pressure spike "
+      "spans fewer than %.0f cells at half its height (narrowest %.1f cells, %.4g GPa, at s = %.4g "
+      "mm): %s\n",
+      narrow, converged_steps, kSpikeResolvedCells, narrowest.width_cells,
+      narrowest.pressure_pa * 1e-9, r.steps[at].s_m * 1e3, kSpikeAdvice);
+}
 
 struct RunArgs {
   std::string case_path;
@@ -56,6 +98,7 @@ int RunGear(const RunArgs& a) {
                 hottest->t_max_k, hottest->s_m * 1e3, hottest->srr, mu / static_cast<double>(ok),
                 ok == r.steps.size() ? "" : " (converged steps)");
   }
+  NoteCycleSpikes(r, ok);
   std::printf("wrote %s%s%s\n", r.hdf5_path.c_str(), r.csv_path.empty() ? "" : " and ",
               r.csv_path.c_str());
   if (!r.converged()) {
@@ -75,6 +118,7 @@ int RunContact(const RunArgs& a) {
   const auto& last = r.steps.back();
   std::printf("h_min = %.6g m, h_c = %.6g m, p_max = %.6g Pa\n", last.h_min_m, last.h_c_m,
               last.p_max_pa);
+  if (last.summary.usable()) NoteContactSpike(last.outlet_spike);
   std::printf("wrote %s and %s\n", r.profile_csv.c_str(), r.history_csv.c_str());
   if (!r.converged()) {
     std::fprintf(stderr, "tehl run: the solver did not converge: %s\n",

@@ -19,6 +19,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/elastic_deflection.cpp
   src/ehl/surface_roughness.cpp
   src/ehl/dry_contact.cpp
+  src/ehl/outlet_spike.cpp
   src/ehl/surface_temperature.cpp
   src/ehl/film_energy.cpp
   src/ehl/film_energy_system.cpp

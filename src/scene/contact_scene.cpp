@@ -95,6 +95,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
     rec.h_min_m = state.MinFilm();
     rec.h_c_m = state.CentralFilm(grid);
     rec.p_max_pa = state.MaxPressure();
+    rec.outlet_spike = FindOutletSpike(state.p_pa, grid.x_start_m(), grid.dx_m());
     // The same quantities as the mesh cycle's /cycle/T_max and /cycle/mu (mesh_cycle_scene.cpp).
     // A failed step's film may touch (h <= 0), where friction is undefined: 0 then, and the
     // step's status column says it failed.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tehl/ehl/line_contact_solver.hpp"
+#include "tehl/ehl/outlet_spike.hpp"
 
 namespace tehl {
 
@@ -28,6 +29,7 @@ struct ContactStepRecord {
   double friction_coefficient = 0;  // mu = (|F1| + |F2|) / (2 w), seed 004 eq. 16
                                     //   (LineContactSolver::Friction, as /cycle/mu) [-]
   double wall_time_s = 0;           // wall time of this step's solve (substeps included) [s]
+  OutletSpike outlet_spike;         // the outlet pressure spike and its width in cells
   LineContactSolver::Summary summary;
 };
 
