@@ -20,9 +20,15 @@ GmresResult Gmres(const LinearOperator& apply_a, const LinearOperator& apply_m_i
   Eigen::MatrixXd v(n, restart + 1), z(n, restart);
   Eigen::MatrixXd h = Eigen::MatrixXd::Zero(restart + 1, restart);
   Eigen::VectorXd cs(restart), sn(restart), g(restart + 1), w(n), ax(n), tmp(n);
+  // A zero initial guess (the usual Newton step) needs no product for its residual.
+  bool x_zero = x->isZero(0.0);
   while (result.iterations < max_iterations) {
-    apply_a(*x, &ax);
-    Eigen::VectorXd r = b - ax;
+    Eigen::VectorXd r = b;
+    if (!x_zero) {
+      apply_a(*x, &ax);
+      r -= ax;
+    }
+    x_zero = false;
     double beta = r.norm();
     result.relative_residual = beta / bnorm;
     if (result.relative_residual <= tol) {
