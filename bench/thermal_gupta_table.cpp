@@ -104,9 +104,9 @@ int main(int argc, char** argv) {
           "%+.1f %% | %.2f | %.4f | %.1e | %d | %d | %.1f |\n",
           l_t, disc.um_m_s, srr, hc_iso * 1e6, st.CentralFilm(th.grid()) * 1e6, ratio, phi,
           100.0 * (ratio / phi - 1.0), in ? "yes" : "**no**", hmin_ratio, q_ratio,
-          100.0 * (q_ratio / phi - 1.0),
-          st.temperature.MaxTemperature() - c.temperature_k, th.Friction(c, st).coefficient,
-          sum.energy_balance_error, sum.coupling_iterations, sum.temperature_backoffs, seconds);
+          100.0 * (q_ratio / phi - 1.0), st.temperature.MaxTemperature() - c.temperature_k,
+          th.Friction(c, st).coefficient, sum.energy_balance_error, sum.coupling_iterations,
+          sum.temperature_backoffs, seconds);
       std::fflush(stdout);
     }
   }
