@@ -29,19 +29,15 @@ void NoteContactSpike(const OutletSpike& spike) {
 }
 
 void NoteCycleSpikes(const MeshCycleResult& r, size_t converged_steps) {
-  if (r.x_m.size() < 2) return;
-  const double dx = r.x_m[1] - r.x_m[0];
+  const std::vector<OutletSpike> spikes = r.OutletSpikes();
   int narrow = 0;
   OutletSpike narrowest;
   size_t at = 0;
-  for (size_t k = 0; k < converged_steps && k < r.p_pa.size(); ++k) {
-    const Eigen::Map<const Eigen::VectorXd> p(r.p_pa[k].data(),
-                                              static_cast<Eigen::Index>(r.p_pa[k].size()));
-    const OutletSpike s = FindOutletSpike(p, r.x_m.front(), dx);
-    if (s.resolved()) continue;
+  for (size_t k = 0; k < converged_steps && k < spikes.size(); ++k) {
+    if (spikes[k].resolved()) continue;
     ++narrow;
-    if (narrow == 1 || s.width_cells < narrowest.width_cells) {
-      narrowest = s;
+    if (narrow == 1 || spikes[k].width_cells < narrowest.width_cells) {
+      narrowest = spikes[k];
       at = k;
     }
   }

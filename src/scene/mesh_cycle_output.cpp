@@ -98,6 +98,16 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
     zones.push_back(k.zone);
   }
   h5.WriteInts("/cycle/pairs_in_contact", pairs, "tooth pairs sharing the load");
+  // The outlet spike's width at half prominence (FindOutletSpike; docs/results.md): under
+  // kSpikeResolvedCells the step's p_max is not grid-converged.
+  if (r.p_pa.size() == r.steps.size()) {
+    std::vector<double> cells;
+    for (const OutletSpike& spike : r.OutletSpikes())
+      cells.push_back(spike.found ? spike.width_cells : -1.0);
+    h5.WriteVector("/cycle/spike_cells", cells, "-",
+                   "width of the outlet pressure spike at half its prominence, in grid cells "
+                   "(-1: no spike); below 20 the step's p_max is not grid-converged");
+  }
   h5.WriteStrings("/cycle/zone", zones, "segment of the path: A-B, B-D or D-E");
   h5.SetAttribute("/cycle", "length", r.length_m, "m");
   h5.SetAttribute("/cycle", "s_B", r.s_b_m, "m");

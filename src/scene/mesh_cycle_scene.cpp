@@ -52,6 +52,16 @@ int MeshCycleResult::PitchStep() const {
   return best;
 }
 
+std::vector<OutletSpike> MeshCycleResult::OutletSpikes() const {
+  std::vector<OutletSpike> out;
+  if (x_m.size() < 2) return out;
+  for (const auto& row : p_pa) {
+    const Eigen::Map<const Eigen::VectorXd> p(row.data(), static_cast<Eigen::Index>(row.size()));
+    out.push_back(FindOutletSpike(p, x_m.front(), x_m[1] - x_m[0]));
+  }
+  return out;
+}
+
 std::vector<double> MeshCycleStepPositions(
     double g, double sb, double sd, int steps, const std::vector<int>& min_per_segment) {
   const std::vector<double> ends = SegmentEnds(g, sb, sd);

@@ -94,6 +94,10 @@ TEST(MeshCycleResults, FileMatchesDocsResultsMd) {
   testing::Hdf5Doubles(f, "/profiles/p", &dims);
   EXPECT_EQ(dims, (std::vector<hsize_t>{13, 257}));
   EXPECT_EQ(testing::Hdf5Doubles(f, "/cycle/h_c").size(), 13u);
+  // The spike width per step: -1 (no spike) or a width within the grid.
+  const std::vector<double> spike = testing::Hdf5Doubles(f, "/cycle/spike_cells");
+  ASSERT_EQ(spike.size(), 13u);
+  for (double w : spike) EXPECT_TRUE(w == -1.0 || (w > 0.0 && w < 256.0)) << w;
   EXPECT_EQ(testing::Hdf5StringAttribute(f, "/", "converged"), "true");
   // /case is the case as run: the reduced keys and the defaults filled in.
   const std::string case_text = testing::Hdf5Text(f, "/case");

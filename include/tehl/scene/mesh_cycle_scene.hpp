@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "tehl/ehl/line_contact_solver.hpp"
+#include "tehl/ehl/outlet_spike.hpp"
 
 namespace tehl {
 
@@ -76,6 +77,8 @@ struct MeshCycleResult {
   bool already_complete = false;                // resume found a complete result: no steps
   bool converged() const;                       // every planned step solved and usable
   int PitchStep() const;                        // index of the step nearest to C
+  // The outlet pressure spike of each step's film (p_pa; FindOutletSpike), one per row.
+  std::vector<OutletSpike> OutletSpikes() const;
 };
 
 // Step ends s_1..s_N in (0, g], uniform within each of the segments [0, s_b], [s_b, s_d],
