@@ -240,10 +240,19 @@ TEST(ContactScene, IsothermalDiscRecordsTheInletTemperatureAndRollingFriction) {
   const Csv steps = ReadCsv(r.history_csv);
   ASSERT_EQ(steps.rows.size(), 1u);
   // Existing columns first and unchanged; the text column stays last.
-  const std::vector<std::string> head = {"t_s",         "w_n_per_m",         "u1_m_s",
-                                         "u2_m_s",      "h_min_m",           "h_c_m",
-                                         "p_max_pa",    "t_max_k",           "mu",
-                                         "wall_time_s", "newton_iterations", "coupling_iterations",
+  const std::vector<std::string> head = {"t_s",
+                                         "w_n_per_m",
+                                         "u1_m_s",
+                                         "u2_m_s",
+                                         "h_min_m",
+                                         "h_c_m",
+                                         "p_max_pa",
+                                         "t_max_k",
+                                         "mu",
+                                         "wall_time_s",
+                                         "spike_cells",
+                                         "newton_iterations",
+                                         "coupling_iterations",
                                          "termination"};
   EXPECT_EQ(steps.head, head);
   // %.9e keeps 10 significant digits.
@@ -251,6 +260,8 @@ TEST(ContactScene, IsothermalDiscRecordsTheInletTemperatureAndRollingFriction) {
   EXPECT_NEAR(steps.At(0, "mu"), s.friction_coefficient, 1e-9 * s.friction_coefficient);
   EXPECT_NEAR(steps.At(0, "wall_time_s"), s.wall_time_s, 1e-9 * s.wall_time_s);
   EXPECT_EQ(steps.At(0, "coupling_iterations"), s.summary.coupling_iterations);
+  EXPECT_NEAR(steps.At(0, "spike_cells"), s.outlet_spike.found ? s.outlet_spike.width_cells : -1.0,
+              1e-9);
   const Csv profile = ReadCsv(r.profile_csv);
   EXPECT_EQ(profile.head, (std::vector<std::string>{"x_m", "p_pa", "h_m"}));
 }
