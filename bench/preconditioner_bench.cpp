@@ -99,6 +99,18 @@ void BM_CoarseApply(benchmark::State& state) {
   });
 }
 
+// Coarse level: building E = W^T J Z and its LU, at the solver's stride (CoarseStride with
+// its default of 128 to 256 coarse pressures). Paid at every refactorization, with the fine
+// level's.
+void BM_CoarseBuild(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  tehl::testing::RandomNewtonSystem rs(n, 3, tehl::FftPlanEffort::kMeasure);
+  tehl::internal::CoarseCorrection cc;
+  const int stride = tehl::internal::CoarseStride(n, 128);
+  Measure(state, rs, [&] { benchmark::DoNotOptimize(cc.Build(rs.sys, stride)); });
+  state.counters["coarse"] = cc.coarse_size();
+}
+
 // One Jacobian product J x (FFT convolution + Reynolds stencil).
 void BM_JacobianProduct(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
@@ -122,6 +134,7 @@ void SizesAndPaths(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_BandSolve)->Apply(SizesAndPaths)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_BandFactorize)->Apply(SizesAndPaths)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CoarseApply)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_CoarseBuild)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_JacobianProduct)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

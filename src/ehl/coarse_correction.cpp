@@ -9,10 +9,15 @@
 
 namespace tehl::internal {
 
+int CoarseStride(int n, int coarse_pressures) {
+  const int c = coarse_pressures;
+  const int target = std::clamp((n - 1) / 16, c, 2 * c);
+  return std::max(2, (n - 1) / (target + 1));
+}
+
 double CoarseCorrection::HatWeight(int node, int c) const {
-  const int centre = (c + 1) * stride_;
-  const double d = std::abs(node - centre);
-  return d < stride_ ? 1.0 - d / stride_ : 0.0;
+  const int d = std::abs(node - (c + 1) * stride_);
+  return d < stride_ ? hat_[d] : 0.0;  // 1 - d/G from the table (Build fills it first)
 }
 
 bool CoarseCorrection::Build(const NewtonSystem& sys, int stride) {
@@ -51,10 +56,17 @@ bool CoarseCorrection::Build(const NewtonSystem& sys, int stride) {
   // bb = rs p_ref b (zero on cavitated rows): with T_l(k) = sum over (i, q) with i - 2 + q = k of
   // hat_l(i) bb(i, q) (k in N_l - G - 1 .. N_l + G), E_BK(l, c) = sum_k T_l(k) kh(|k - N_c|).
   const int len = 2 * g + 2;
-  std::vector<double> tl(len);
+  // E_BK(l, c) reads kh at |k - N_c| = |(l - c - 1) G - 1 + t|, t = k - k0 = 0 .. len - 1:
+  // with kh extended to negative arguments (khs[j - j_min] = kh(|j|), j from -nc G - 1 to
+  // nc G), each entry is one dot product of contiguous vectors (vectorized; the element-wise
+  // loop with |.| inside was most of a factorization's time at 4097 nodes).
+  const int j_min = -nc * g - 1, j_max = nc * g;
+  std::vector<double> khs(sys.elastic ? j_max - j_min + 1 : 0);
+  for (size_t q = 0; q < khs.size(); ++q) khs[q] = kh[std::abs(static_cast<int>(q) + j_min)];
+  Eigen::VectorXd tl(len);
   for (int l = 0; l < nc; ++l) {
     const int nl = (l + 1) * g, k0 = nl - g - 1;
-    std::fill(tl.begin(), tl.end(), 0.0);
+    tl.setZero();
     for (int i = nl - g + 1; i <= nl + g - 1; ++i) {
       if (sys.cavitated[i]) continue;
       const double w = HatWeight(i, l) * (*sys.row_scale)[i] * sys.p_ref;
@@ -66,9 +78,7 @@ bool CoarseCorrection::Build(const NewtonSystem& sys, int stride) {
     if (sys.elastic)
       for (int c = 0; c < nc; ++c) {
         const int off = k0 - (c + 1) * g;  // k - N_c at t = 0
-        double acc = 0;
-        for (int t = 0; t < len; ++t) acc += tl[t] * kh[std::abs(off + t)];
-        e_(l, c) = acc;
+        e_(l, c) = tl.dot(Eigen::Map<const Eigen::VectorXd>(khs.data() + (off - j_min), len));
       }
     // Local part: the Reynolds stencil (nodes i-2 .. i+1, or the identity of a cavitated row)
     // on the hats it reaches from the support of hat l: l-2 .. l+1.

@@ -19,6 +19,11 @@ namespace tehl::internal {
 
 struct NewtonSystem;
 
+// The stride G the Newton-Krylov solver uses on n nodes for coarse_pressures = c > 0: one
+// coarse pressure per 16 cells, between c and 2c of them (newton_krylov_solver.cpp gives the
+// measurements behind the rule).
+int CoarseStride(int n, int coarse_pressures);
+
 class CoarseCorrection {
  public:
   // Builds and factorizes E for the system's current linearization; stride >= 2 fine cells

@@ -94,9 +94,7 @@ class NewtonKrylovSolver final : public NewtonLinearSolver {
       // nodes, 18.5 -> 14.5 at 16385), while up to 2049 nodes nothing changes. One per 8
       // cells (2c from 2049 nodes) made 2049 nodes so much faster than 4097 that the cold
       // time grew by 2.51 on that doubling, against the target of 2.3.
-      const int c = settings_.coarse_pressures;
-      const int target = std::clamp((sys.n - 1) / 16, c, 2 * c);
-      const int stride = std::max(2, (sys.n - 1) / (target + 1));
+      const int stride = CoarseStride(sys.n, settings_.coarse_pressures);
       std::string banded_why;
       two_level_ = coarse_.Build(sys, stride) && banded_.Factorize(sys, settings_.band, &banded_why);
     }

@@ -85,5 +85,23 @@ TEST(CoarseCorrection, CoarseMatrixIsTheGalerkinProductOfTheJacobian) {
 // differences must still keep double precision.
 TEST(CoarseCorrection, GalerkinProductHoldsOnALargeGrid) { ExpectGalerkinProduct(8193, 64); }
 
+// The solver's rule (coarse_correction.hpp): c to about 2c coarse pressures (the floor of the
+// stride adds up to 10 %: 272 of them at 4097 nodes for c = 128), one per 16 cells in
+// between; stride 2 when the grid has fewer than 2 (c + 1) cells.
+TEST(CoarseCorrection, StrideGivesBetweenCAndAbout2CCoarsePressures) {
+  for (int c : {16, 128}) {
+    for (int n = 129; n <= 65537; n = 2 * n - 1) {
+      const int g = internal::CoarseStride(n, c);
+      const int nc = (n - 1) / g - 1;  // hats inside the grid (CoarseCorrection::Build)
+      if (n - 1 < 2 * (c + 1)) {
+        EXPECT_EQ(g, 2) << n;
+        continue;
+      }
+      EXPECT_GE(nc, c) << "n " << n << " c " << c;
+      EXPECT_LE(nc, 2.2 * c) << "n " << n << " c " << c;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tehl
