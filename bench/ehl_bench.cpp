@@ -95,13 +95,15 @@ void BM_FftConvolution(benchmark::State& state) {
 }
 
 // Second argument: 0 = auto, 1 = dense LU, 2 = Newton-Krylov, 3 = reused dense LU,
-// 4 = Newton-Krylov with the UMFPACK hierarchy (SolverOptions).
+// 4 = Newton-Krylov with the UMFPACK hierarchy, 5 = Newton-Krylov with uniform coarse hats
+// (SolverOptions).
 tehl::LinearSolverKind Kind(int64_t code) {
   switch (code) {
     case 1:
       return tehl::LinearSolverKind::kDense;
     case 2:
     case 4:
+    case 5:
       return tehl::LinearSolverKind::kNewtonKrylov;
     case 3:
       return tehl::LinearSolverKind::kReusedLu;
@@ -116,6 +118,7 @@ tehl::LineContactSolver::Options SolverOptions(int64_t code) {
   tehl::LineContactSolver::Options opt;
   opt.linear_solver = Kind(code);
   if (code == 4) opt.preconditioner_coarse_pressures = 0;
+  if (code == 5) opt.preconditioner_inlet_hats = 1;  // two-level with uniform coarse hats
   // A failing iterative solve is reported by the counters instead of spending minutes in
   // load continuation.
   if (opt.linear_solver != tehl::LinearSolverKind::kDense) opt.max_continuation_stages = 0;
@@ -258,6 +261,7 @@ void Solves(benchmark::internal::Benchmark* b) {
     if (n <= 4097) b->Args({n, 3});  // reused dense LU: one O(n^3) factorization or more
     b->Args({n, 2});
     b->Args({n, 4});
+    b->Args({n, 5});
   }
 }
 
@@ -266,7 +270,7 @@ BENCHMARK(BM_FftConvolution)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Residual)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Steady)->Apply(Solves)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK(BM_WarmNewton)
-    ->ArgsProduct({{513, 1025, 2049, 4097, 8193, 16385}, {2, 4}})
+    ->ArgsProduct({{513, 1025, 2049, 4097, 8193, 16385}, {2, 4, 5}})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

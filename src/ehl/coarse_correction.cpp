@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "ehl/newton_system.hpp"
@@ -15,13 +16,36 @@ int CoarseStride(int n, int coarse_pressures) {
   return std::max(2, (n - 1) / (target + 1));
 }
 
+int ElasticZoneStart(const NewtonSystem& sys) {
+  if (!sys.elastic) return 0;
+  std::vector<double> ratio(sys.n, 0.0);
+  double top = 0;
+  for (int i = 1; i + 1 < sys.n; ++i) {
+    if (sys.cavitated[i]) continue;
+    double sa = 0, sb = 0;
+    for (int q = 0; q < 4; ++q) {
+      sa += std::abs((*sys.a)(i, q));
+      sb += std::abs((*sys.b)(i, q));
+    }
+    ratio[i] = sa > 0 ? sb / sa : std::numeric_limits<double>::infinity();
+    if (std::isfinite(ratio[i])) top = std::max(top, ratio[i]);
+  }
+  for (int i = 1; i + 1 < sys.n; ++i)
+    if (ratio[i] > 1e-6 * top) return i;
+  return 0;
+}
+
 double CoarseCorrection::HatWeight(int node, int c) const {
   const int d = std::abs(node - (c + 1) * stride_);
   return d < stride_ ? hat_[d] : 0.0;  // 1 - d/G from the table (Build fills it first)
 }
 
-bool CoarseCorrection::Build(const NewtonSystem& sys, int stride) {
+bool CoarseCorrection::Build(const NewtonSystem& sys,
+                             int stride,
+                             int wide_until,
+                             int wide_multiple) {
   const int n = sys.n;
+  merged_ = false;
   if (stride < 2) return false;
   const int nc = (n - 1) / stride - 1;  // hats centred at G .. nc G, each inside the grid
   if (nc < 2) return false;
@@ -110,23 +134,56 @@ bool CoarseCorrection::Build(const NewtonSystem& sys, int stride) {
   }
   // Load row: dx times the sum of a hat (G); it does not depend on H0.
   for (int c = 0; c < nc; ++c) e_(nc, c) = sys.dx * sys.p_ref * g / sys.load;
+  merged_ = MergeInlet(wide_until, wide_multiple);
   lu_.compute(e_);
   if (!(lu_.rcond() > 1e-14)) return false;
-  rc_.resize(nc + 1);
+  rc_.resize(e_.rows());
+  return true;
+}
+
+bool CoarseCorrection::MergeInlet(int wide_until, int wide_multiple) {
+  const int m = wide_multiple;
+  if (m < 2) return false;
+  // Centres as lattice indices j (node j G), 1 .. nc: every m-th below wide_until, then all.
+  std::vector<int> centre;
+  for (int j = m; j <= nc_ && j * stride_ < wide_until; j += m) centre.push_back(j);
+  if (centre.empty()) return false;
+  for (int j = centre.back() + 1; j <= nc_; ++j) centre.push_back(j);
+  const int k_count = static_cast<int>(centre.size());
+  // Column k of P: hat k at the lattice nodes between its neighbours (index 0 is node 0,
+  // index nc + 1 the last lattice node, neither an unknown).
+  std::vector<Eigen::Triplet<double>> t;
+  for (int k = 0; k < k_count; ++k) {
+    const int a = k ? centre[k - 1] : 0, c = centre[k];
+    const int b = k + 1 < k_count ? centre[k + 1] : nc_ + 1;
+    for (int j = a + 1; j < b; ++j) {
+      const double w =
+          j <= c ? static_cast<double>(j - a) / (c - a) : static_cast<double>(b - j) / (b - c);
+      t.emplace_back(j - 1, k, w);
+    }
+  }
+  t.emplace_back(nc_, k_count, 1.0);  // H0 (and the load row) unchanged
+  merge_.resize(nc_ + 1, k_count + 1);
+  merge_.setFromTriplets(t.begin(), t.end());
+  const Eigen::MatrixXd ep = e_ * merge_;  // E_G P
+  e_ = merge_.transpose() * ep;
   return true;
 }
 
 void CoarseCorrection::Apply(const Eigen::VectorXd& x, Eigen::VectorXd* y) const {
   const int m = n_ - 2, g = stride_;
-  rc_.setZero();
+  Eigen::VectorXd& rc = merged_ ? rf_ : rc_;  // the uniform restriction W_G^T x
+  rc.resize(nc_ + 1);
   for (int c = 0; c < nc_; ++c) {
     const int centre = (c + 1) * g;
     double s = x[centre - 1];
     for (int t = 1; t < g; ++t) s += hat_[t] * (x[centre - t - 1] + x[centre + t - 1]);
-    rc_[c] = s;
+    rc[c] = s;
   }
-  rc_[nc_] = x[m];
-  const Eigen::VectorXd sc = lu_.solve(rc_);
+  rc[nc_] = x[m];
+  if (merged_) rc_ = merge_.transpose() * rf_;
+  if (merged_) sf_ = merge_ * lu_.solve(rc_);
+  const Eigen::VectorXd& sc = merged_ ? sf_ : (sf_ = lu_.solve(rc_));
   y->setZero(m + 1);
   for (int c = 0; c < nc_; ++c) {
     const int centre = (c + 1) * g;

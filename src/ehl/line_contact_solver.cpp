@@ -104,6 +104,8 @@ std::vector<std::string> LineContactSolver::Options::Validate() const {
   rule(preconditioner_band >= 0, "preconditioner_band", preconditioner_band, ">= 0");
   rule(preconditioner_coarse_pressures >= 0, "preconditioner_coarse_pressures",
        preconditioner_coarse_pressures, ">= 0");
+  rule(preconditioner_inlet_hats >= 1, "preconditioner_inlet_hats", preconditioner_inlet_hats,
+       ">= 1");
   rule(max_continuation_stages >= 0, "max_continuation_stages", max_continuation_stages, ">= 0");
   rule(min_step_fraction > 0 && min_step_fraction <= 1, "min_step_fraction", min_step_fraction,
        "in (0, 1]");
@@ -183,6 +185,7 @@ LineContactSolver::Impl::Impl(const UniformGrid& grid,
     k.max_iterations = opt.gmres_max_iterations;
     k.band = opt.preconditioner_band;
     k.coarse_pressures = opt.preconditioner_coarse_pressures;
+    k.inlet_hats = opt.preconditioner_inlet_hats;
     linear_ = internal::MakeNewtonKrylovSolver(k);
   }
 }

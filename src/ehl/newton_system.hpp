@@ -71,6 +71,9 @@ struct KrylovSettings {
   // 16 cells in between; banded_film_preconditioner.hpp, coarse_correction.hpp); 0 = the
   // hierarchy of strides (film_augmented_preconditioner.hpp).
   int coarse_pressures = 128;
+  // Two-level: > 1 = hats this many lattice cells wide before ElasticZoneStart on a lattice of
+  // half the stride CoarseStride gives (coarse_correction.hpp); 1 = uniform hats.
+  int inlet_hats = 8;
 };
 std::unique_ptr<NewtonLinearSolver> MakeNewtonKrylovSolver(const KrylovSettings& settings);
 // GMRES preconditioned by the dense LU of an earlier Jacobian, refactorized when GMRES needs

@@ -45,6 +45,28 @@ void ExpectSameSolution(int n) {
 TEST(LinearSolversVerification, DenseAndNewtonKrylovAgreeOn257Nodes) { ExpectSameSolution(257); }
 TEST(LinearSolversVerification, DenseAndNewtonKrylovAgreeOn513Nodes) { ExpectSameSolution(513); }
 TEST(LinearSolversVerification, DenseAndNewtonKrylovAgreeOn1025Nodes) { ExpectSameSolution(1025); }
+// From 2049 nodes the two-level preconditioner puts wide coarse hats in the inlet
+// (preconditioner_inlet_hats, coarse_correction.hpp): a preconditioner changes GMRES's path,
+// not the equations, so both settings must end at the same film (the tolerance of the test
+// above). The dense comparison at 4097 nodes below covers the same path.
+TEST(LinearSolversVerification, InletHatsLeaveTheSolutionUnchangedOn2049Nodes) {
+  const MoesPoint mp{20, 10};
+  FilmState states[2];
+  const int hats[2] = {1, 8};
+  for (int k = 0; k < 2; ++k) {
+    LineContactSolver::Options o;
+    o.linear_solver = LinearSolverKind::kNewtonKrylov;
+    o.preconditioner_inlet_hats = hats[k];
+    MoesSolver ms(mp, 2049, o);
+    const LineContactSolver::Summary sum = ms.solver.SolveSteady(mp.Conditions(), &states[k]);
+    ASSERT_TRUE(sum.usable()) << sum.BriefReport();
+    std::printf("inlet hats %d: %s\n", hats[k], sum.BriefReport().c_str());
+  }
+  const double rel =
+      (states[0].p_pa - states[1].p_pa).lpNorm<Eigen::Infinity>() / states[0].MaxPressure();
+  std::printf("max |dp| / max p = %.3g\n", rel);
+  EXPECT_LE(rel, 1e-8);
+}
 // 4097 nodes: dense LU takes about a minute here, so the test is labelled slow
 // (ehl_linear_solvers_slow_test).
 #ifdef TEHL_SLOW_TESTS

@@ -108,6 +108,12 @@ class LineContactSolver {
                                       // two-level preconditioner (c to 2c pressures, one per
                                       // 16 cells in between); 0 = the UMFPACK hierarchy of
                                       // strides instead (docs/performance.md) [-]
+    int preconditioner_inlet_hats = 8;  // Newton-Krylov, c > 0, where c to 2c uniform hats
+                                        // are >= 8 cells apart (2049 nodes and up at c = 128):
+                                        // hats on a lattice of half their stride, this many
+                                        // lattice cells wide before the elastic zone (about
+                                        // 1.5 b before the centre); 1 = uniform hats
+                                        // (docs/theory.md) [-]
     int max_continuation_stages = 12; // load / pressure-viscosity continuation stages [-]
     int coarse_grid_nodes = 129;      // grid sequencing halves the grid down to this [-]
     double min_step_fraction = 1.0 / 1024;  // smallest line-search step [-]

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "ehl/coarse_correction.hpp"
 #include "ehl/newton_system.hpp"
@@ -45,21 +47,31 @@ TEST(BandedFilmPreconditioner, FullBandSolveIsADirectSolveOfTheJacobian) {
 // The coarse matrix E = W^T J Z built from the hat-smoothed kernel equals the product formed
 // column by column with the Jacobian's own (FFT) product, and the correction C = Z E^{-1} W^T
 // is a Galerkin projection: W^T (x - J C x) = 0 for any x.
-void ExpectGalerkinProduct(int n, int g) {
+// With wide_multiple m > 1 the hats below node wide_until are m G wide (coarse_correction.hpp);
+// Z is built here from that rule, hat by hat, independently of the library's merge P.
+void ExpectGalerkinProduct(int n, int g, int wide_until = 0, int m = 1) {
   testing::RandomNewtonSystem rs(n, 5);
   internal::CoarseCorrection cc;
-  ASSERT_TRUE(cc.Build(rs.sys, g));
-  const int nc = (n - 1) / g - 1, m = n - 2;
+  ASSERT_TRUE(cc.Build(rs.sys, g, wide_until, m));
+  const int lattice = (n - 1) / g - 1, nm = n - 2;
+  std::vector<int> centre;  // hat centres (nodes)
+  if (m > 1)
+    for (int j = m; j <= lattice && j * g < wide_until; j += m) centre.push_back(j * g);
+  for (int j = centre.empty() ? 1 : centre.back() / g + 1; j <= lattice; ++j)
+    centre.push_back(j * g);
+  const int nc = static_cast<int>(centre.size());
   ASSERT_EQ(cc.coarse_size(), nc + 1);
-  // Z and W: hats centred at nodes (c + 1) g (unknown index node - 1), then e_H0 / e_load.
-  Eigen::MatrixXd z = Eigen::MatrixXd::Zero(m + 1, nc + 1);
-  for (int c = 0; c < nc; ++c)
-    for (int node = 1; node <= m; ++node) {
-      const double d = std::abs(node - (c + 1) * g);
-      if (d < g) z(node - 1, c) = 1.0 - d / g;
-    }
-  z(m, nc) = 1.0;
-  Eigen::MatrixXd jz(m + 1, nc + 1);
+  // Z and W: hats between neighbouring centres (node 0 and node (lattice + 1) g close the
+  // ends), then e_H0 / e_load (unknown index node - 1).
+  Eigen::MatrixXd z = Eigen::MatrixXd::Zero(nm + 1, nc + 1);
+  for (int c = 0; c < nc; ++c) {
+    const int a = c ? centre[c - 1] : 0, b = c + 1 < nc ? centre[c + 1] : (lattice + 1) * g;
+    for (int node = a + 1; node < b; ++node)
+      z(node - 1, c) = node <= centre[c] ? double(node - a) / (centre[c] - a)
+                                         : double(b - node) / (b - centre[c]);
+  }
+  z(nm, nc) = 1.0;
+  Eigen::MatrixXd jz(nm + 1, nc + 1);
   for (int c = 0; c <= nc; ++c) {
     Eigen::VectorXd col;
     rs.sys.Apply(z.col(c), &col);
@@ -67,7 +79,7 @@ void ExpectGalerkinProduct(int n, int g) {
   }
   const Eigen::MatrixXd e = z.transpose() * jz;
   const double err = (cc.matrix() - e).cwiseAbs().maxCoeff() / e.cwiseAbs().maxCoeff();
-  std::printf("max |E - W^T J Z| / max |E| = %.3g\n", err);
+  std::printf("%d coarse pressures: max |E - W^T J Z| / max |E| = %.3g\n", nc, err);
   EXPECT_LE(err, 1e-12);  // both sum the same kernel products; the FFT adds ~1e-15
   const Eigen::VectorXd x = rs.RandomVector();
   Eigen::VectorXd cx, jcx;
@@ -81,9 +93,32 @@ TEST(CoarseCorrection, CoarseMatrixIsTheGalerkinProductOfTheJacobian) {
   ExpectGalerkinProduct(513, 16);
 }
 
-// The hat-smoothed kernel comes from prefix sums over the whole grid: on a large grid their
-// differences must still keep double precision.
+// Hats 8 G wide up to node 200 (the last wide hat then also reaches the first narrow centre),
+// and a switch point that falls between wide centres.
+TEST(CoarseCorrection, WideInletHatsGiveTheGalerkinProductOfTheirSpace) {
+  ExpectGalerkinProduct(513, 4, 200, 8);
+  ExpectGalerkinProduct(1025, 7, 333, 3);
+}
+
 TEST(CoarseCorrection, GalerkinProductHoldsOnALargeGrid) { ExpectGalerkinProduct(8193, 64); }
+
+// ElasticZoneStart: the first fluid row whose film coupling sum |b| / sum |a| exceeds 1e-6 of
+// the largest. Rows here: |a| = 1 everywhere, |b| = 10^(-12 + 12 i / 200) up to node 200 and 1
+// beyond, so the ratio first exceeds 1e-6 where -12 + 12 i / 200 > -6, at i = 101; the
+// cavitated tail (largest |b| there, 1e3) must not count, and a rigid system has no zone.
+TEST(CoarseCorrection, ElasticZoneStartsWhereTheFilmCouplingReachesAMillionth) {
+  testing::RandomNewtonSystem rs(257, 3);
+  for (int i = 0; i < 257; ++i) {
+    const double scale = i < 200 ? std::pow(10.0, -12.0 + 12.0 * i / 200) : 1.0;
+    for (int q = 0; q < 4; ++q) {
+      rs.a(i, q) = (q % 2 ? -0.25 : 0.25);
+      rs.b(i, q) = (q % 2 ? 0.25 : -0.25) * (rs.sys.cavitated[i] ? 1e3 : scale);
+    }
+  }
+  EXPECT_EQ(internal::ElasticZoneStart(rs.sys), 101);
+  rs.sys.elastic = nullptr;
+  EXPECT_EQ(internal::ElasticZoneStart(rs.sys), 0);
+}
 
 // The solver's rule (coarse_correction.hpp): c to about 2c coarse pressures (the floor of the
 // stride adds up to 10 %: 272 of them at 4097 nodes for c = 128), one per 16 cells in
