@@ -221,6 +221,37 @@ void BM_WarmNewton(benchmark::State& state) {
   state.counters["failed"] = static_cast<double>(failed);
 }
 
+// Warm re-solves along a monotone sequence, as in a mesh cycle: each solve starts from the
+// last film with the load 1 % higher (third argument 0) or the speed 2 % higher (1) than the
+// one before. Same counters as BM_WarmNewton; the per-solve time is the benchmark's own.
+void BM_WarmSequence(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const tehl::Lubricant oil = tehl::testing::ReferenceOil(kEta0, 0.68);
+  const tehl::LineContactSolver::Options opt = SolverOptions(state.range(1));
+  const tehl::UniformGrid grid = Grid(n);
+  tehl::LineContactSolver solver(grid, kEPrime, oil, SteadyEffects(), opt);
+  const tehl::ContactConditions start = MoesPoint();
+  tehl::ContactConditions c = start;
+  tehl::FilmState s;
+  solver.SolveSteady(c, &s);
+  long newton = 0, gmres = 0, solves = 0, failed = 0;
+  for (auto _ : state) {
+    ++solves;
+    if (state.range(2) == 0) {
+      c.load_n_per_m = start.load_n_per_m * (1.0 + 0.01 * solves);
+    } else {
+      c.u1_m_s = c.u2_m_s = start.u1_m_s * (1.0 + 0.02 * solves);
+    }
+    const auto sum = solver.SolveSteady(c, &s);
+    newton += sum.total_iterations;
+    gmres += sum.krylov_iterations;
+    failed += !sum.usable();
+  }
+  state.counters["newton_per_solve"] = static_cast<double>(newton) / solves;
+  state.counters["gmres_per_newton"] = static_cast<double>(gmres) / std::max(1L, newton);
+  state.counters["failed"] = static_cast<double>(failed);
+}
+
 // One evaluation of the film and the scaled residual with its linearization at a converged
 // state (what each Newton iteration pays at least once), in FFT convolutions of the same n
 // timed in the same process (`residual_per_fft`).
@@ -269,6 +300,10 @@ BENCHMARK(BM_DeflectionPlanning)->Apply(Sizes)->Iterations(1)->Unit(benchmark::k
 BENCHMARK(BM_FftConvolution)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Residual)->Apply(Sizes)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Steady)->Apply(Solves)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_WarmSequence)
+    ->ArgsProduct({{1025, 2049, 4097, 8193, 16385}, {2, 5}, {0, 1}})
+    ->Iterations(20)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_WarmNewton)
     ->ArgsProduct({{513, 1025, 2049, 4097, 8193, 16385}, {2, 4, 5}})
     ->Unit(benchmark::kMillisecond);
