@@ -5,10 +5,28 @@
 #include <limits>
 #include <vector>
 
+#include "ehl/banded_film_preconditioner.hpp"
 #include "ehl/newton_system.hpp"
 #include "tehl/ehl/elastic_deflection.hpp"
 
 namespace tehl::internal {
+
+void ApplyTwoLevel(const NewtonSystem& sys,
+                   const CoarseCorrection& coarse,
+                   const BandedFilmPreconditioner& fine,
+                   const Eigen::VectorXd& x,
+                   Eigen::VectorXd* y,
+                   TwoLevelScratch* w) {
+  w->x = x;  // x and y may alias
+  coarse.Apply(w->x, &w->coarse_y);
+  sys.Apply(w->coarse_y, &w->fine_rhs);
+  w->fine_rhs = w->x - w->fine_rhs;
+  fine.Solve(w->fine_rhs, y);
+  *y += w->coarse_y;
+  // Exactly x_i on cavitated rows: the sum above leaves round-off there (~1e-27 Pa).
+  for (int i = 1; i + 1 < sys.n; ++i)
+    if (sys.cavitated[i]) (*y)[i - 1] = w->x[i - 1];
+}
 
 int CoarseStride(int n, int coarse_pressures) {
   const int c = coarse_pressures;

@@ -25,6 +25,22 @@
 namespace tehl::internal {
 
 struct NewtonSystem;
+class BandedFilmPreconditioner;
+class CoarseCorrection;
+
+// The two-level preconditioner of the Newton-Krylov solver: y = C x, then y += M^{-1} (x - J y)
+// with the fine level M (banded_film_preconditioner.hpp), and y_i = x_i on cavitated rows (J
+// is the identity there, so a Newton step leaves those pressures exactly zero). x and y may
+// alias; `scratch` holds three work vectors between calls.
+struct TwoLevelScratch {
+  Eigen::VectorXd x, coarse_y, fine_rhs;
+};
+void ApplyTwoLevel(const NewtonSystem& system,
+                   const CoarseCorrection& coarse,
+                   const BandedFilmPreconditioner& fine,
+                   const Eigen::VectorXd& x,
+                   Eigen::VectorXd* y,
+                   TwoLevelScratch* scratch);
 
 // The stride G the Newton-Krylov solver uses on n nodes for coarse_pressures = c > 0: one
 // coarse pressure per 16 cells, between c and 2c of them (newton_krylov_solver.cpp gives the

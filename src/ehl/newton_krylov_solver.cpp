@@ -19,6 +19,7 @@
 #include "ehl/film_augmented_preconditioner.hpp"
 #include "ehl/gmres.hpp"
 #include "ehl/newton_system.hpp"
+#include "ehl/newton_system_file.hpp"
 
 namespace tehl::internal {
 namespace {
@@ -35,22 +36,14 @@ class NewtonKrylovSolver final : public NewtonLinearSolver {
     // to twice the iterations it needed right after that factorization (plus 10); beyond
     // that the Jacobian has drifted (a load step, a moving cavitation boundary) and the
     // augmented matrix is refactorized, GMRES continuing from where it stopped.
+    MaybeWriteNewtonSystem(sys, rhs);  // TEHL_WRITE_NEWTON_SYSTEMS (newton_system_file.hpp)
     auto apply = [&](const Eigen::VectorXd& x, Eigen::VectorXd* y) { sys.Apply(x, y); };
     auto precondition = [&](const Eigen::VectorXd& x, Eigen::VectorXd* y) {
       if (!two_level_) {
         pre_.Solve(x, y);
         return;
       }
-      x_ = x;  // x and y may alias
-      coarse_.Apply(x_, &coarse_y_);
-      sys.Apply(coarse_y_, &fine_rhs_);
-      fine_rhs_ = x_ - fine_rhs_;
-      banded_.Solve(fine_rhs_, y);
-      *y += coarse_y_;
-      // A cavitated row of J is e_i, so J^{-1} x has x_i there: exactly, so that a Newton step
-      // leaves cavitated pressures at exactly zero (the sum above leaves round-off, ~1e-27 Pa).
-      for (int i = 1; i + 1 < sys.n; ++i)
-        if (sys.cavitated[i]) (*y)[i - 1] = x_[i - 1];
+      ApplyTwoLevel(sys, coarse_, banded_, x, y, &scratch_);
     };
     dz->setZero(rhs.size());
     last_iterations_ = 0;
@@ -118,7 +111,7 @@ class NewtonKrylovSolver final : public NewtonLinearSolver {
   BandedFilmPreconditioner banded_;  // two-level: fine band LU ...
   CoarseCorrection coarse_;          // ... and the coarse space
   bool two_level_ = false;           // the current factorization is the two-level one
-  Eigen::VectorXd x_, coarse_y_, fine_rhs_;
+  TwoLevelScratch scratch_;
   int factored_n_ = 0;        // n of the current factorization, 0 = none
   int fresh_iterations_ = 0;  // GMRES iterations right after the last factorization
   int last_iterations_ = 0;

@@ -8,6 +8,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/anderson_mixer.cpp
   src/ehl/eyring_wall_stress.cpp
   src/ehl/newton_system.cpp
+  src/ehl/newton_system_file.cpp
   src/ehl/gmres.cpp
   src/ehl/fixed_point_newton.cpp
   src/ehl/newton_krylov_solver.cpp
