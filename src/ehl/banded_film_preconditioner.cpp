@@ -20,96 +20,63 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
   const int n = sys.n, m = n - 2;
   band = std::max(band, 1);
   n_ = n;
+  band_ = band;
   size_ = 2 * m;
   kl_ = std::max(4, 2 * band);
   ku_ = std::max(3, 2 * band);
-  Eigen::MatrixXd bc;  // columns H_0, H_{n-1}, H0
   // kc_q = (p_ref/h_ref) K_q and prefix sums pk[q + 1] = sum_{d <= q} kc_d.
   const double ks = sys.p_ref / sys.h_ref;
-  std::vector<double> kc(n, 0.0), pk(n + 1, 0.0);
+  kc_.assign(n, 0.0);
+  std::vector<double> pk(n + 1, 0.0);
   if (sys.elastic)
-    for (int q = 0; q < n; ++q) kc[q] = ks * sys.elastic->Coefficient(q);
-  for (int q = 0; q < n; ++q) pk[q + 1] = pk[q] + kc[q];
+    for (int q = 0; q < n; ++q) kc_[q] = ks * sys.elastic->Coefficient(q);
+  for (int q = 0; q < n; ++q) pk[q + 1] = pk[q] + kc_[q];
   auto row_sum = [&](int c) {  // sum_{j=1..m} kc_|c-j|
     const int lo = 1, hi = m;
     if (hi < c) return pk[c - lo + 1] - pk[c - hi];
     if (lo > c) return pk[hi - c + 1] - pk[lo - c];
-    return pk[c - lo + 1] + pk[hi - c + 1] - kc[0];
+    return pk[c - lo + 1] + pk[hi - c + 1] - kc_[0];
   };
   // The second-differenced kernel d2[q] = kc_|q-1| - 2 kc_q + kc_q+1 (Toeplitz: the entry of
   // the film row of node i for P_j, q = |i - j| <= band).
   // |i - j| < m, so q + 1 <= m < n.
   const int qmax = std::min(band, m - 1);
-  std::vector<double> d2(qmax + 1);
-  for (int q = 0; q <= qmax; ++q) d2[q] = kc[std::abs(q - 1)] - 2.0 * kc[q] + kc[q + 1];
-  // The core (through `add`) and the border columns (into bc), once per storage tried.
-  auto hcol = [](int k) { return 2 * (k - 1); };      // core column of H_k, k = 1 .. m
-  auto pcol = [](int k) { return 2 * (k - 1) + 1; };  // core column of P_k
-  auto assemble = [&](auto&& add) {
-    bc.setZero(size_, 3);
-    // Film change H_k in row `row` with weight v: core column or border column.
-    auto add_h = [&](int row, int k, double v) {
-      if (k == 0)
-        bc(row, 0) += v;
-      else if (k == n - 1)
-        bc(row, 1) += v;
-      else
-        add(row, hcol(k), v);
-    };
-    for (int i = 1; i <= m; ++i) {
-      const int row = 2 * (i - 1);
-      if (sys.cavitated[i]) {
-        add(row, pcol(i), 1.0);
-      } else {
-        const double rs = (*sys.row_scale)[i];
-        for (int q = 0; q < 4; ++q) {
-          const int k = i - 2 + q;
-          if (k < 0 || k >= n) continue;
-          if (k >= 1 && k <= m) add(row, pcol(k), rs * sys.p_ref * (*sys.a)(i, q));
-          add_h(row, k, rs * sys.h_ref * (*sys.b)(i, q));
-        }
-      }
-      // Film row of node i: a second difference of H against the truncated kernel.
-      const int frow = row + 1;
-      add_h(frow, i - 1, 1.0);
-      add_h(frow, i, -2.0);
-      add_h(frow, i + 1, 1.0);
-      const int lo = std::max(1, i - band), hi = std::min(m, i + band);
-      double in_band = 0.0;
-      for (int j = lo; j <= hi; ++j) {
-        const double dij = d2[std::abs(i - j)];
-        in_band += dij;
-        if (j != i) add(frow, pcol(j), -dij);
-      }
-      const double total = row_sum(i - 1) - 2.0 * row_sum(i) + row_sum(i + 1);
-      const double dii = kc[1] - 2.0 * kc[0] + kc[1];
-      add(frow, pcol(i), -(dii + (total - in_band)));
-    }
-  };
+  d2_.resize(qmax + 1);
+  for (int q = 0; q <= qmax; ++q) d2_[q] = kc_[std::abs(q - 1)] - 2.0 * kc_[q] + kc_[q + 1];
+  // The film row of node i puts on P_i the second difference of the whole kernel's row sums
+  // less the rest of its band (the dropped tail's row sum on the diagonal).
+  film_diag_.assign(m + 1, 0.0);
+  for (int i = 1; i <= m; ++i) {
+    double in_band = 0.0;
+    for (int j = std::max(1, i - band); j <= std::min(m, i + band); ++j)
+      in_band += d2_[std::abs(i - j)];
+    const double total = row_sum(i - 1) - 2.0 * row_sum(i) + row_sum(i + 1);
+    film_diag_[i] = kc_[1] - 2.0 * kc_[0] + kc_[1] + (total - in_band);
+  }
   // Border rows on the P columns: the exact film rows of both ends and the load row.
   border_.resize(3, m);
   const double wload = sys.dx * sys.p_ref / sys.load;
   for (int j = 1; j <= m; ++j) {
-    border_(0, j - 1) = -kc[j];
-    border_(1, j - 1) = -kc[n - 1 - j];
+    border_(0, j - 1) = -kc_[j];
+    border_(1, j - 1) = -kc_[n - 1 - j];
     border_(2, j - 1) = wload;
   }
-  Eigen::Matrix3d d;
-  d << 1, 0, -1, 0, 1, -1, 0, 0, 0;
+  bc_.setZero(size_, 3);
   // First the band LU pivoting within node pairs (pair_pivoted_band_lu.hpp), whose
   // substitution is about twice as fast (docs/performance.md); LAPACK's dgbtrf if one of its
   // pivots falls below the threshold (a tenth of its column by default).
   paired_ = false;
   if (pair_threshold_ >= 0) {
     pair_.Reset(size_, kl_, ku_);
-    assemble([&](int row, int col, double v) { pair_.Add(row, col, v); });
+    Assemble(sys, 1, [&](int row, int col, double v) { pair_.Add(row, col, v); });
     paired_ = pair_.Factorize(pair_threshold_);
   }
   if (!paired_) {
     ldab_ = 2 * kl_ + ku_ + 1;
     ab_.assign(static_cast<std::size_t>(ldab_) * size_, 0.0);
     ipiv_.resize(size_);
-    assemble([&](int row, int col, double v) {
+    bc_.setZero();
+    Assemble(sys, 1, [&](int row, int col, double v) {
       ab_[static_cast<std::size_t>(col) * ldab_ + (kl_ + ku_ + row - col)] += v;
     });
     int info = 0;
@@ -121,7 +88,70 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
     }
     MeasureFactors();
   }
-  y_ = bc;
+  return FinishBorder(why);
+}
+
+bool BandedFilmPreconditioner::Refresh(const NewtonSystem& sys, int first_node, std::string* why) {
+  if (!paired_ || sys.n != n_) return false;
+  first_node = std::max(first_node, 1);
+  if (first_node > n_ - 2) return true;
+  const int row = 2 * (first_node - 1);
+  pair_.ClearRowsFrom(row);
+  bc_.bottomRows(size_ - row).setZero();
+  Assemble(sys, first_node, [&](int r, int col, double v) { pair_.Add(r, col, v); });
+  if (!pair_.RefactorizeFrom(row, pair_threshold_)) {
+    paired_ = false;  // the factors are void: only Factorize again
+    return false;
+  }
+  return FinishBorder(why);
+}
+
+// The Reynolds and film rows of nodes first_node .. n - 2 through `add` (core entries) and
+// into bc_ (border columns).
+template <typename Add>
+void BandedFilmPreconditioner::Assemble(const NewtonSystem& sys, int first_node, Add&& add) {
+  const int n = n_, m = n - 2, band = band_;
+  auto hcol = [](int k) { return 2 * (k - 1); };      // core column of H_k, k = 1 .. m
+  auto pcol = [](int k) { return 2 * (k - 1) + 1; };  // core column of P_k
+  // Film change H_k in row `row` with weight v: core column or border column.
+  auto add_h = [&](int row, int k, double v) {
+    if (k == 0)
+      bc_(row, 0) += v;
+    else if (k == n - 1)
+      bc_(row, 1) += v;
+    else
+      add(row, hcol(k), v);
+  };
+  for (int i = first_node; i <= m; ++i) {
+    const int row = 2 * (i - 1);
+    if (sys.cavitated[i]) {
+      add(row, pcol(i), 1.0);
+    } else {
+      const double rs = (*sys.row_scale)[i];
+      for (int q = 0; q < 4; ++q) {
+        const int k = i - 2 + q;
+        if (k < 0 || k >= n) continue;
+        if (k >= 1 && k <= m) add(row, pcol(k), rs * sys.p_ref * (*sys.a)(i, q));
+        add_h(row, k, rs * sys.h_ref * (*sys.b)(i, q));
+      }
+    }
+    // Film row of node i: a second difference of H against the truncated kernel.
+    const int frow = row + 1;
+    add_h(frow, i - 1, 1.0);
+    add_h(frow, i, -2.0);
+    add_h(frow, i + 1, 1.0);
+    for (int j = std::max(1, i - band); j <= std::min(m, i + band); ++j)
+      if (j != i) add(frow, pcol(j), -d2_[std::abs(i - j)]);
+    add(frow, pcol(i), -film_diag_[i]);
+  }
+}
+
+// The bordered part: Y = C^{-1} B_c and the 3 x 3 Schur complement, after the core's LU.
+bool BandedFilmPreconditioner::FinishBorder(std::string* why) {
+  const int m = n_ - 2;
+  Eigen::Matrix3d d;
+  d << 1, 0, -1, 0, 1, -1, 0, 0, 0;
+  y_ = bc_;
   for (int c = 0; c < 3; ++c)  // the H0 column has no core entries: its solve is zero
     if (!y_.col(c).isZero(0.0)) Substitute(y_.col(c).data());
   // S = D - B_r C^{-1} B_c, with B_r acting on the P rows of Y.
@@ -129,7 +159,7 @@ bool BandedFilmPreconditioner::Factorize(const NewtonSystem& sys, int band, std:
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) {
       double acc = 0;
-      for (int j = 1; j <= m; ++j) acc += border_(r, j - 1) * y_(pcol(j), c);
+      for (int j = 1; j <= m; ++j) acc += border_(r, j - 1) * y_(2 * (j - 1) + 1, c);
       s(r, c) -= acc;
     }
   Eigen::FullPivLU<Eigen::Matrix3d> lu(s);

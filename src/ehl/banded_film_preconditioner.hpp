@@ -32,6 +32,14 @@ class BandedFilmPreconditioner {
   // Assembles and factorizes the bordered band matrix of `system` with kernel half-band
   // `band` >= 1. False (with a reason) if the band LU or the Schur complement is singular.
   bool Factorize(const NewtonSystem& system, int band, std::string* why);
+  // After a successful Factorize with pair interchanges (paired()): the Reynolds rows of
+  // nodes first_node .. n - 2 from `system`, the rows before them as they were, the core
+  // eliminated again only from about first_node on (PairPivotedBandLu::RefactorizeFrom). Where
+  // the Jacobian drifts between Newton iterations (the outlet: the pressure spike and the
+  // cavitation boundary), this gives nearly a fresh factorization's GMRES counts at a fraction
+  // of its cost (docs/performance.md). False (with a reason if the border is singular) if it
+  // cannot: the caller factorizes again.
+  bool Refresh(const NewtonSystem& system, int first_node, std::string* why);
   // y ~ J^{-1} x for vectors of size n - 1 (the Newton unknowns).
   void Solve(const Eigen::VectorXd& x, Eigen::VectorXd* y) const;
   // The core's LU first tries interchanges within node pairs (pair_pivoted_band_lu.hpp) and
@@ -43,7 +51,14 @@ class BandedFilmPreconditioner {
  private:
   void Substitute(double* b) const;  // b <- (core)^{-1} b with the LU factors in ab_
   void MeasureFactors();
+  template <typename Add>
+  void Assemble(const NewtonSystem& system, int first_node, Add&& add);
+  bool FinishBorder(std::string* why);
   int n_ = 0, size_ = 0, kl_ = 0, ku_ = 0, ldab_ = 0;  // core size 2 (n - 2)
+  int band_ = 0;
+  std::vector<double> kc_, d2_, film_diag_;  // (p_ref/h_ref) K_q; its second difference in
+                                             // the band; each film row's P_i entry (negated)
+  Eigen::MatrixXd bc_;                       // border columns H_0, H_{n-1}, H0 of the core rows
   double pair_threshold_ = 0.1;
   PairPivotedBandLu pair_;     // the core's LU with interchanges inside node pairs ...
   bool paired_ = false;        // ... if its pivots held; otherwise LAPACK's:

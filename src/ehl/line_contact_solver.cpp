@@ -106,6 +106,8 @@ std::vector<std::string> LineContactSolver::Options::Validate() const {
        preconditioner_coarse_pressures, ">= 0");
   rule(preconditioner_inlet_hats >= 1, "preconditioner_inlet_hats", preconditioner_inlet_hats,
        ">= 1");
+  rule(preconditioner_outlet_refresh >= 0, "preconditioner_outlet_refresh",
+       preconditioner_outlet_refresh, ">= 0");
   rule(max_continuation_stages >= 0, "max_continuation_stages", max_continuation_stages, ">= 0");
   rule(min_step_fraction > 0 && min_step_fraction <= 1, "min_step_fraction", min_step_fraction,
        "in (0, 1]");
@@ -186,6 +188,7 @@ LineContactSolver::Impl::Impl(const UniformGrid& grid,
     k.band = opt.preconditioner_band;
     k.coarse_pressures = opt.preconditioner_coarse_pressures;
     k.inlet_hats = opt.preconditioner_inlet_hats;
+    k.outlet_refresh = opt.preconditioner_outlet_refresh;
     linear_ = internal::MakeNewtonKrylovSolver(k);
   }
 }

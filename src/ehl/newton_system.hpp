@@ -74,6 +74,10 @@ struct KrylovSettings {
   // Two-level: > 1 = hats this many lattice cells wide before ElasticZoneStart on a lattice of
   // half the stride CoarseStride gives (coarse_correction.hpp); 1 = uniform hats.
   int inlet_hats = 8;
+  // Two-level: > 0 = at each Newton system, factorize the band's rows again from n /
+  // outlet_refresh nodes before the outlet (or before the first row whose cavitation
+  // changed) on; 0 = keep the band as factorized (newton_krylov_solver.cpp).
+  int outlet_refresh = 16;
 };
 std::unique_ptr<NewtonLinearSolver> MakeNewtonKrylovSolver(const KrylovSettings& settings);
 // GMRES preconditioned by the dense LU of an earlier Jacobian, refactorized when GMRES needs

@@ -84,13 +84,22 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void BackBlocks(
 // Right-looking elimination in the band storage of PairPivotedBandLu (A(i, j) at
 // j ld + up + i - j, kl + 1 = `below` rows under the diagonal, ku + 1 = `above` over it).
 // Returns the number of interchanged pairs, or -1 if a pivot fails the threshold.
-__attribute__((target_clones("arch=x86-64-v3", "default"))) int Eliminate(
-    int n, int below, int above, int ld, int up, double* a, char* swapped, double threshold) {
+// Starts at column `start` (even; the columns before it are already eliminated) and toggles
+// the interchange flag of every pair it interchanges.
+__attribute__((target_clones("arch=x86-64-v3", "default"))) int Eliminate(int n,
+                                                                          int start,
+                                                                          int below,
+                                                                          int above,
+                                                                          int ld,
+                                                                          int up,
+                                                                          double* a,
+                                                                          char* swapped,
+                                                                          double threshold) {
   auto at = [&](int i, int j) -> double& {
     return a[static_cast<std::size_t>(j) * ld + (up + i - j)];
   };
   int swaps = 0;
-  for (int j = 0; j < n; ++j) {
+  for (int j = start; j < n; ++j) {
     const int last_row = std::min(n - 1, j + below), last_col = std::min(n - 1, j + above);
     if (j % 2 == 0 && j + 1 < n && std::abs(at(j + 1, j)) > std::abs(at(j, j))) {
       // Interchange rows j and j + 1 over every column either can reach.
@@ -102,7 +111,7 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) int Eliminate(
         else if ((in_j && at(j, c) != 0.0) || (in_j1 && at(j + 1, c) != 0.0))
           return -1;  // would leave the band (not reached with this storage; kept exact)
       }
-      swapped[j / 2] = 1;
+      swapped[j / 2] ^= 1;
       ++swaps;
     }
     double* col = &at(j, j);  // col[i - j] = A(i, j), i = j .. j + below
@@ -136,8 +145,53 @@ void PairPivotedBandLu::Reset(int n, int kl, int ku) {
 
 bool PairPivotedBandLu::Factorize(double threshold) {
   swap_.assign((n_ + 1) / 2, 0);
-  swaps_ = Eliminate(n_, kl_ + 1, ku_ + 1, ld_, up_, a_.data(), swap_.data(), threshold);
-  if (swaps_ < 0) return false;
+  swaps_ = Eliminate(n_, 0, kl_ + 1, ku_ + 1, ld_, up_, a_.data(), swap_.data(), threshold);
+  factored_ = swaps_ >= 0;
+  if (!factored_) return false;
+  Pack();
+  return true;
+}
+
+void PairPivotedBandLu::ClearRowsFrom(int row) {
+  for (int j = std::max(0, row - (kl_ + 1)); j < n_; ++j)
+    for (int i = std::max(row, j - up_); i <= std::min(n_ - 1, j + ld_ - 1 - up_); ++i)
+      a_[Index(i, j)] = 0.0;
+}
+
+// The rows from `row` on hold a new matrix's entries (ClearRowsFrom, Add); the rows before
+// it, the factors of the old one. Elimination step j touches rows j + 1 ... j + below, so the
+// steps before j0 = row - below (rounded down to a pair) saw only old rows, and their
+// multipliers and rows of U stand. Step j0 then needs the rows j0 ... row - 1 as the steps
+// before it left them, in their (interchanged) pair order: from the old factors,
+//   S(i, c) = sum_{j0 <= j <= min(i, c)} L(i, j) U(j, c)   (L(i, i) = 1),
+// the part of (P A)(i, c) = sum_j L(i, j) U(j, c) that the steps from j0 on remove. The rows
+// from `row` on are untouched by the steps before j0 (j + below < row), and the old pair
+// order of the pairs from `row` on is void: their rows come in natural order.
+bool PairPivotedBandLu::RefactorizeFrom(int row, double threshold) {
+  if (!factored_ || row < 0 || row % 2 != 0) return false;
+  if (row >= n_) return true;
+  const int below = kl_ + 1, above = ku_ + 1;
+  const int j0 = std::max(0, row - below) / 2 * 2;
+  for (int k = row / 2; k < static_cast<int>(swap_.size()); ++k) swap_[k] = 0;
+  auto in_band = [&](int i, int j) { return i - j <= ld_ - 1 - up_ && j - i <= up_; };
+  auto get = [&](int i, int j) { return in_band(i, j) ? a_[Index(i, j)] : 0.0; };
+  const int rows = row - j0, width = below + above + 2;  // columns i - below .. i + above
+  std::vector<double> s(static_cast<std::size_t>(rows) * width, 0.0);
+  for (int i = j0; i < row; ++i)
+    for (int c = std::max(j0, i - below); c <= std::min(n_ - 1, i + above); ++c) {
+      double acc = c >= i ? get(i, c) : get(i, c) * get(c, c);  // j = min(i, c)
+      for (int j = std::max({j0, i - below, c - above}); j < std::min(i, c); ++j)
+        acc += get(i, j) * get(j, c);
+      s[static_cast<std::size_t>(i - j0) * width + (c - i + below)] = acc;
+    }
+  for (int i = j0; i < row; ++i)
+    for (int c = std::max(j0, i - below); c <= std::min(n_ - 1, i + above); ++c)
+      if (in_band(i, c))
+        a_[Index(i, c)] = s[static_cast<std::size_t>(i - j0) * width + (c - i + below)];
+  factored_ = Eliminate(n_, j0, below, above, ld_, up_, a_.data(), swap_.data(), threshold) >= 0;
+  if (!factored_) return false;
+  swaps_ = 0;
+  for (char f : swap_) swaps_ += f;
   Pack();
   return true;
 }

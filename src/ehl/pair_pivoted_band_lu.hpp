@@ -36,6 +36,13 @@ class PairPivotedBandLu {
   // Factorizes in place. False if a pivot falls below `threshold` times the largest entry
   // below it in its column (the factors are then unusable).
   bool Factorize(double threshold);
+  // Replacing the rows from `row` (even) on, after a successful Factorize: ClearRowsFrom(row),
+  // Add the new entries of those rows, then RefactorizeFrom(row) eliminates again only from
+  // about `row` - kl on, from the old factors of the rows before it. The result is the
+  // factorization of the matrix with the new rows (up to rounding), at a fraction
+  // (n - row + kl) / n of Factorize's cost. False as for Factorize.
+  void ClearRowsFrom(int row);
+  bool RefactorizeFrom(int row, double threshold);
   // b <- A^{-1} b (b of size n), after a successful Factorize.
   void Solve(double* b) const;
   int pair_swaps() const { return swaps_; }  // pairs whose rows were interchanged
@@ -48,6 +55,7 @@ class PairPivotedBandLu {
   int n_ = 0, kl_ = 0, ku_ = 0;
   int up_ = 0, ld_ = 0;  // storage: rows j - up_ ... j + (ld_ - 1 - up_) of column j
   int swaps_ = 0;
+  bool factored_ = false;   // a_ holds the factors of a successful (Re)Factorize
   std::vector<double> a_;   // the matrix, then L (unit, below) and U (above and diagonal)
   std::vector<char> swap_;  // per pair: rows 2k and 2k + 1 interchanged
   // Blocked layout (Pack): L's column j at j ls_ (rows j + 1 ..., zero past the band); U with

@@ -114,6 +114,11 @@ class LineContactSolver {
                                         // lattice cells wide before the elastic zone (about
                                         // 1.5 b before the centre); 1 = uniform hats
                                         // (docs/theory.md) [-]
+    int preconditioner_outlet_refresh = 16;  // Newton-Krylov, c > 0: at each Newton
+                                             // iteration the kept band factorization is redone
+                                             // from n / this many nodes before the outlet (or the
+                                             // first node whose cavitation changed) on; 0 = never
+                                             // (docs/performance.md) [-]
     int max_continuation_stages = 12; // load / pressure-viscosity continuation stages [-]
     int coarse_grid_nodes = 129;      // grid sequencing halves the grid down to this [-]
     double min_step_fraction = 1.0 / 1024;  // smallest line-search step [-]

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "ehl/coarse_correction.hpp"
@@ -42,6 +43,59 @@ TEST(BandedFilmPreconditioner, FullBandSolveIsADirectSolveOfTheJacobian) {
   testing::ExpectDirectSolveOfJ<BandedWithThreshold<0>>(513, 1e-10, 5e-6);
   testing::ExpectDirectSolveOfJ<BandedWithThreshold<-10>>(300, 1e-10, 5e-6);
   testing::ExpectDirectSolveOfJ<BandedWithThreshold<-10>>(513, 1e-10, 5e-6);
+}
+
+// Refresh from node k: the Reynolds rows of nodes k .. n - 2 of a new system, the rows before
+// them of the old one, eliminated again from about k on. It must precondition exactly like a
+// fresh factorization of that mixed system (the same matrix, so the same solve up to rounding
+// of the reconstructed Schur rows: 1e-12 relative), for k at the first node, in the middle,
+// just before the cavitated outlet of either system (the new one cavitates 7 nodes earlier),
+// and at the last node; a factorization by dgbtrf (no pair interchanges) refuses it.
+TEST(BandedFilmPreconditioner, RefreshFromANodeEqualsAFreshFactorizationOfTheMixedSystem) {
+  const int n = 513, band = 8;
+  testing::RandomNewtonSystem old_s(n, 5), new_s(n, 9);
+  for (int i = n - n / 5 - 7; i < n - n / 5; ++i) new_s.sys.cavitated[i] = 1;
+  for (int k : {1, 256, n - n / 5 - 20, n - n / 5 - 3, n - 2}) {
+    internal::BandedFilmPreconditioner refreshed, fresh;  // pair interchanges, as above
+    refreshed.set_pair_pivot_threshold(0.0);
+    fresh.set_pair_pivot_threshold(0.0);
+    std::string why;
+    ASSERT_TRUE(refreshed.Factorize(old_s.sys, band, &why)) << why;
+    ASSERT_TRUE(refreshed.paired());
+    ASSERT_TRUE(refreshed.Refresh(new_s.sys, k, &why)) << "k " << k << " " << why;
+    Eigen::Matrix<double, Eigen::Dynamic, 4> a = old_s.a, b = old_s.b;
+    Eigen::VectorXd c = old_s.c;
+    internal::NewtonSystem mixed = old_s.sys;
+    mixed.a = &a;
+    mixed.b = &b;
+    mixed.row_scale = &c;
+    for (int i = k; i < n; ++i) {
+      a.row(i) = new_s.a.row(i);
+      b.row(i) = new_s.b.row(i);
+      c[i] = new_s.c[i];
+      mixed.cavitated[i] = new_s.sys.cavitated[i];
+    }
+    ASSERT_TRUE(fresh.Factorize(mixed, band, &why)) << why;
+    const Eigen::VectorXd x = new_s.RandomVector();
+    Eigen::VectorXd y_refreshed, y_fresh;
+    refreshed.Solve(x, &y_refreshed);
+    fresh.Solve(x, &y_fresh);
+    EXPECT_LE((y_refreshed - y_fresh).norm(), 1e-12 * y_fresh.norm()) << "k " << k;
+    // ... and not like the old system's factorization (the test can tell them apart).
+    if (k < n - 2) {
+      internal::BandedFilmPreconditioner stale;
+      stale.set_pair_pivot_threshold(0.0);
+      ASSERT_TRUE(stale.Factorize(old_s.sys, band, &why));
+      Eigen::VectorXd y_stale;
+      stale.Solve(x, &y_stale);
+      EXPECT_GT((y_stale - y_fresh).norm(), 1e-6 * y_fresh.norm()) << "k " << k;
+    }
+  }
+  internal::BandedFilmPreconditioner lapack;
+  lapack.set_pair_pivot_threshold(-1.0);
+  std::string why;
+  ASSERT_TRUE(lapack.Factorize(old_s.sys, band, &why));
+  EXPECT_FALSE(lapack.Refresh(new_s.sys, 256, &why));
 }
 
 // The coarse matrix E = W^T J Z built from the hat-smoothed kernel equals the product formed
