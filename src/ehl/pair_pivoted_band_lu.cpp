@@ -148,7 +148,7 @@ bool PairPivotedBandLu::Factorize(double threshold) {
   swaps_ = Eliminate(n_, 0, kl_ + 1, ku_ + 1, ld_, up_, a_.data(), swap_.data(), threshold);
   factored_ = swaps_ >= 0;
   if (!factored_) return false;
-  Pack();
+  Pack(0);
   return true;
 }
 
@@ -192,64 +192,84 @@ bool PairPivotedBandLu::RefactorizeFrom(int row, double threshold) {
   if (!factored_) return false;
   swaps_ = 0;
   for (char f : swap_) swaps_ += f;
-  Pack();
+  Pack(j0);
   return true;
 }
 
-// The factors in the blocked layout of the substitution kernels above.
-void PairPivotedBandLu::Pack() {
+// The factors in the blocked layout of the substitution kernels above. From column `from` on
+// only, if the layout of the last Pack has room for those columns (the widths of L and of
+// each block of U fit); otherwise all of it.
+void PairPivotedBandLu::Pack(int from) {
   const int n = n_, below = kl_ + 1, above = ku_ + 1;
   const int blocks = (n + 3) / 4, cols = 4 * blocks;
-  int wl = 0;
-  for (int j = 0; j < n; ++j)
-    for (int t = std::min(below, n - 1 - j); t > wl; --t)
-      if (a_[Index(j + t, j)] != 0.0) {
-        wl = t;
-        break;
-      }
-  lq_ = std::max(1, (wl + 3) / 4);
-  ls_ = 4 * lq_ + 3;
-  lower_.assign(static_cast<std::size_t>(cols) * ls_, 0.0);
-  for (int j = 0; j < n; ++j)
-    for (int t = 0; t < std::min(wl, n - 1 - j); ++t)
-      lower_[static_cast<std::size_t>(j) * ls_ + t] = a_[Index(j + 1 + t, j)];
-  inv_diag_.resize(n);
-  for (int j = 0; j < n; ++j) inv_diag_[j] = 1.0 / a_[Index(j, j)];
-  std::vector<int> ulen(cols, 0);
-  for (int j = 0; j < n; ++j) {
+  from = std::clamp(from, 0, n) / 4 * 4;  // whole blocks
+  auto lower_width = [&](int j) {
+    for (int t = std::min(below, n - 1 - j); t > 0; --t)
+      if (a_[Index(j + t, j)] != 0.0) return t;
+    return 0;
+  };
+  auto upper_length = [&](int j) {
     int len = std::min(j, above);
     while (len > 0 && a_[Index(j - len, j)] == 0.0) --len;
-    ulen[j] = len;
-  }
-  upper_chunks_.resize(blocks);
-  upper_offset_.resize(blocks);
-  std::size_t total = 0;
-  int max_chunks = 0;
-  for (int blk = 0; blk < blocks; ++blk) {
-    // Column j0 - c reaches row j0 - c - ulen; the chunks cover rows j0 - 4 ... j0 - 3 - 4 nq.
+    return len;
+  };
+  auto block_reach = [&](int blk) {  // chunks of four rows block blk's columns reach above it
     const int j0 = 4 * blk + 3;
     int reach = 0;
-    for (int c = 0; c < 4; ++c) reach = std::max(reach, ulen[j0 - c] + c - 3);
-    upper_chunks_[blk] = (reach + 3) / 4;
-    max_chunks = std::max(max_chunks, upper_chunks_[blk]);
-    upper_offset_[blk] = total;
-    total += 4 * static_cast<std::size_t>(4 * upper_chunks_[blk] + 3);
+    for (int c = 0; c < 4; ++c)
+      if (j0 - c < n) reach = std::max(reach, upper_length(j0 - c) + c - 3);
+    return (reach + 3) / 4;
+  };
+  bool fits = from > 0 && static_cast<int>(upper_chunks_.size()) == blocks;
+  int wl = 0;
+  for (int j = from; j < n && fits; ++j) wl = std::max(wl, lower_width(j));
+  fits = fits && wl <= 4 * lq_;
+  for (int blk = from / 4; blk < blocks && fits; ++blk)
+    fits = block_reach(blk) <= upper_chunks_[blk];
+  if (!fits) {
+    from = 0;
+    wl = 0;
+    for (int j = 0; j < n; ++j) wl = std::max(wl, lower_width(j));
+    lq_ = std::max(1, (wl + 3) / 4);
+    ls_ = 4 * lq_ + 3;
+    lower_.assign(static_cast<std::size_t>(cols) * ls_, 0.0);
+    upper_chunks_.resize(blocks);
+    upper_offset_.resize(blocks);
+    std::size_t total = 0;
+    for (int blk = 0; blk < blocks; ++blk) {
+      // Column j0 - c reaches row j0 - c - ulen; the chunks cover rows j0 - 4 ... j0 - 3 - 4 nq.
+      upper_chunks_[blk] = block_reach(blk);
+      upper_offset_[blk] = total;
+      total += 4 * static_cast<std::size_t>(4 * upper_chunks_[blk] + 3);
+    }
+    upper_.assign(total, 0.0);
+    inv_diag_.resize(n);
   }
-  upper_.assign(total, 0.0);
-  for (int blk = 0; blk < blocks; ++blk) {
+  const int width = std::min(4 * lq_, below);
+  for (int j = from; j < n; ++j) {
+    double* out = lower_.data() + static_cast<std::size_t>(j) * ls_;
+    std::fill(out, out + ls_, 0.0);
+    for (int t = 0; t < std::min(width, n - 1 - j); ++t) out[t] = a_[Index(j + 1 + t, j)];
+  }
+  for (int j = from; j < n; ++j) inv_diag_[j] = 1.0 / a_[Index(j, j)];
+  int max_chunks = 0;
+  for (int blk = 0; blk < blocks; ++blk) max_chunks = std::max(max_chunks, upper_chunks_[blk]);
+  for (int blk = from / 4; blk < blocks; ++blk) {
     const int j0 = 4 * blk + 3, s = 4 * upper_chunks_[blk] + 3;
+    double* block = upper_.data() + upper_offset_[blk];
+    std::fill(block, block + 4 * static_cast<std::size_t>(s), 0.0);
     for (int c = 0; c < 4; ++c) {
       const int j = j0 - c;
       if (j >= n) continue;
-      double* out = upper_.data() + upper_offset_[blk] + static_cast<std::size_t>(c) * s;
-      for (int t = 0; t < ulen[j]; ++t) {  // row i = j - 1 - t at index s - 1 - t
+      double* out = block + static_cast<std::size_t>(c) * s;
+      for (int t = 0, len = upper_length(j); t < len; ++t) {  // row i = j - 1 - t at s - 1 - t
         const int i = j - 1 - t;
         out[s - 1 - t] = a_[Index(i, j)] * inv_diag_[i];
       }
     }
   }
   pad_ = 4 * std::max(lq_, max_chunks) + 8;
-  work_.assign(static_cast<std::size_t>(cols) + 2 * pad_, 0.0);
+  work_.resize(static_cast<std::size_t>(cols) + 2 * pad_, 0.0);
 }
 
 void PairPivotedBandLu::Solve(double* b) const {

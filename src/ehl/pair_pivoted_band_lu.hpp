@@ -51,7 +51,7 @@ class PairPivotedBandLu {
   std::size_t Index(int i, int j) const {
     return static_cast<std::size_t>(j) * ld_ + (up_ + i - j);
   }
-  void Pack();
+  void Pack(int from);
   int n_ = 0, kl_ = 0, ku_ = 0;
   int up_ = 0, ld_ = 0;  // storage: rows j - up_ ... j + (ld_ - 1 - up_) of column j
   int swaps_ = 0;
