@@ -296,6 +296,7 @@ void Solves(benchmark::internal::Benchmark* b) {
     b->Args({n, 2});
     b->Args({n, 4});
     b->Args({n, 5});
+    b->Args({n, 6});
   }
 }
 
