@@ -155,21 +155,15 @@ bool BandedFilmPreconditioner::FinishBorder(std::string* why) {
   for (int c = 0; c < 3; ++c)  // the H0 column has no core entries: its solve is zero
     if (!y_.col(c).isZero(0.0)) Substitute(y_.col(c).data());
   // S = D - B_r C^{-1} B_c, with B_r acting on the P rows of Y.
-  Eigen::Matrix3d s = d;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) {
-      double acc = 0;
-      for (int j = 1; j <= m; ++j) acc += border_(r, j - 1) * y_(2 * (j - 1) + 1, c);
-      s(r, c) -= acc;
-    }
+  yp_ = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, 2>>(
+      y_.data() + 1, m, 3, Eigen::Stride<Eigen::Dynamic, 2>(y_.rows(), 2));
+  const Eigen::Matrix3d s = d - border_ * yp_;
   Eigen::FullPivLU<Eigen::Matrix3d> lu(s);
   if (!lu.isInvertible()) {
     *why = "newton_krylov: the border of the banded preconditioner is singular";
     return false;
   }
   schur_inv_ = lu.inverse();
-  yp_.resize(m, 3);
-  for (int k = 0; k < m; ++k) yp_.row(k) = y_.row(2 * k + 1);
   work_.resize(size_);
   up_.resize(m);
   return true;
