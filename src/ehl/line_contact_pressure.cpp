@@ -348,6 +348,9 @@ FilmState LineContactSolver::Impl::SequencedGuess(const ContactConditions& c,
     // level as well, 513 ... 4097-node cold solves 10.8 -> 8.0, 18.1 -> 16.3, 35.8 -> 33.0,
     // 69 -> 67 ms. Only the bottom level (129 nodes) keeps the dense LU.
     o.dense_max_nodes = std::min(o.dense_max_nodes, 129);
+    // Its deflection is evaluated a few hundred times per cold solve: FFTW_MEASURE planning
+    // of its size cost more than that (docs/performance.md, "One-off cost").
+    o.fft_plan_effort = FftPlanEffort::kEstimate;
     // The coarse guess is isothermal and Newtonian: the fine grid couples the fields.
     FilmEffects coarse_effects = eff_;
     coarse_effects.thermal = false;

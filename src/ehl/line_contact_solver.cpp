@@ -168,7 +168,7 @@ LineContactSolver::Impl::Impl(const UniformGrid& grid,
   const int n = grid.size();
   x2_.resize(n);
   for (int i = 0; i < n; ++i) x2_[i] = 0.5 * grid.x(i) * grid.x(i);
-  if (eff.elastic) elastic_.emplace(n, grid.dx_m(), e_prime);
+  if (eff.elastic) elastic_.emplace(n, grid.dx_m(), e_prime, opt.fft_plan_effort);
   if (eff.roughness) heights_.setZero(n);
   if (eff.thermal || eff.non_newtonian)
     field_ = std::make_unique<internal::FilmField>(grid, lub, eff, solids, opt);

@@ -67,6 +67,51 @@ TEST(LinearSolversVerification, InletHatsLeaveTheSolutionUnchangedOn2049Nodes) {
   std::printf("max |dp| / max p = %.3g\n", rel);
   EXPECT_LE(rel, 1e-8);
 }
+// The outlet refresh of the band (preconditioner_outlet_refresh) only changes the
+// preconditioner: cold and warm (+1 % load, where the kept factorization is refreshed)
+// solves with and without it agree to the Newton tolerance, as above.
+TEST(LinearSolversVerification, OutletRefreshLeavesTheSolutionUnchangedOn2049Nodes) {
+  const MoesPoint mp{20, 10};
+  FilmState states[2];
+  const int refresh[2] = {0, 16};
+  for (int k = 0; k < 2; ++k) {
+    LineContactSolver::Options o;
+    o.linear_solver = LinearSolverKind::kNewtonKrylov;
+    o.preconditioner_outlet_refresh = refresh[k];
+    MoesSolver ms(mp, 2049, o);
+    ContactConditions c = mp.Conditions();
+    ASSERT_TRUE(ms.solver.SolveSteady(c, &states[k]).usable());
+    c.load_n_per_m *= 1.01;
+    const LineContactSolver::Summary sum = ms.solver.SolveSteady(c, &states[k]);
+    ASSERT_TRUE(sum.usable()) << sum.BriefReport();
+    std::printf("outlet refresh %d, warm: %s\n", refresh[k], sum.BriefReport().c_str());
+  }
+  const double rel =
+      (states[0].p_pa - states[1].p_pa).lpNorm<Eigen::Infinity>() / states[0].MaxPressure();
+  std::printf("max |dp| / max p = %.3g\n", rel);
+  EXPECT_LE(rel, 1e-8);
+}
+
+// FFTW's planning effort (Options::fft_plan_effort) changes the rounding of the deflection,
+// not the film: kEstimate and kMeasure agree to the Newton tolerance. (kEstimate first: FFTW
+// would reuse a measured plan of the same size for it.)
+TEST(LinearSolversVerification, FftPlanEffortLeavesTheSolutionUnchanged) {
+  const MoesPoint mp{20, 10};
+  FilmState states[2];
+  const FftPlanEffort effort[2] = {FftPlanEffort::kEstimate, FftPlanEffort::kMeasure};
+  for (int k = 0; k < 2; ++k) {
+    LineContactSolver::Options o;
+    o.fft_plan_effort = effort[k];
+    MoesSolver ms(mp, 1025, o);
+    const LineContactSolver::Summary sum = ms.solver.SolveSteady(mp.Conditions(), &states[k]);
+    ASSERT_TRUE(sum.usable()) << sum.BriefReport();
+  }
+  const double rel =
+      (states[0].p_pa - states[1].p_pa).lpNorm<Eigen::Infinity>() / states[0].MaxPressure();
+  std::printf("max |dp| / max p = %.3g\n", rel);
+  EXPECT_LE(rel, 1e-8);
+}
+
 // 4097 nodes: dense LU takes about a minute here, so the test is labelled slow
 // (ehl_linear_solvers_slow_test).
 #ifdef TEHL_SLOW_TESTS

@@ -12,13 +12,13 @@
 // Gear-free: R, u1, u2, w and the surface shapes are plain inputs at each instant.
 #pragma once
 
+#include <Eigen/Core>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
-
+#include "tehl/ehl/elastic_deflection.hpp"
 #include "tehl/ehl/film_effects.hpp"
 #include "tehl/ehl/film_energy.hpp"
 #include "tehl/ehl/grid.hpp"
@@ -126,6 +126,12 @@ class LineContactSolver {
     // Newton from the last solution scaled by Hertz similarity (docs/theory.md, "Warm starts"):
     // a cavitation boundary otherwise advances by about one cell per Newton iteration.
     bool predict_hertz_similar = true;
+    // FFTW planning of this grid's deflection (elastic_deflection.hpp): kMeasure (the
+    // default) for the many deflections of a solver's life; the coarse grids of the grid
+    // sequencing, used for a few Newton iterations of a cold solve, always plan with
+    // kEstimate (measuring their sizes took about as long as the whole cold solve at 4097
+    // nodes: docs/performance.md).
+    FftPlanEffort fft_plan_effort = FftPlanEffort::kMeasure;
     // Iterative linear solvers: GMRES stops at the Eisenstat-Walker forcing term (choice 2,
     // gamma 0.9, alpha 2, at most 1e-3) instead of a fixed 1e-10 (docs/theory.md).
     bool inexact_newton = true;
