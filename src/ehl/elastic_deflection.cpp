@@ -3,15 +3,18 @@
 #include <fftw3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <cstdlib>
 #include <new>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "ehl/fftw_planner.hpp"
+#include "ehl/fftw_wisdom.hpp"
 #include "tehl/error.hpp"
 #include "tehl/units.hpp"
 
@@ -113,10 +116,21 @@ ElasticDeflection::ElasticDeflection(int n, double dx_m, double e_prime_pa, FftP
   if (!d.real_buffer || !d.spectrum) throw std::bad_alloc();
   {
     // FFTW_MEASURE overwrites the buffers while planning: plan before filling them.
-    const unsigned flags = effort == FftPlanEffort::kMeasure ? FFTW_MEASURE : FFTW_ESTIMATE;
+    const bool measure = effort == FftPlanEffort::kMeasure;
+    const unsigned flags = measure ? FFTW_MEASURE : FFTW_ESTIMATE;
     std::lock_guard<std::mutex> lock(internal::FftwPlannerMutex());
+    if (measure) internal::ImportWisdomOnce();  // TEHL_FFTW_WISDOM (fftw_wisdom.hpp)
+    const auto start = std::chrono::steady_clock::now();
     d.forward = fftw_plan_dft_r2c_1d(m, d.real_buffer, d.spectrum, flags);
     d.backward = fftw_plan_dft_c2r_1d(m, d.spectrum, d.real_buffer, flags);
+    // A plan taken from wisdom is built in microseconds to a few milliseconds; a longer
+    // planning measured new plans, worth keeping.
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (measure && seconds > 0.02 && d.forward && d.backward) {
+      const std::string file = internal::WisdomFile();
+      if (!file.empty()) internal::ExportWisdom(file);
+    }
   }
   if (!d.forward || !d.backward) throw std::runtime_error("FFTW could not build a plan");
 

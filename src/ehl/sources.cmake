@@ -18,6 +18,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/line_contact_transient.cpp
   src/ehl/line_contact_coupling.cpp
   src/ehl/elastic_deflection.cpp
+  src/ehl/fftw_wisdom.cpp
   src/ehl/surface_roughness.cpp
   src/ehl/dry_contact.cpp
   src/ehl/outlet_spike.cpp
