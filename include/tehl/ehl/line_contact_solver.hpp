@@ -92,7 +92,7 @@ class LineContactSolver {
  public:
   struct Options {
     LinearSolverKind linear_solver = LinearSolverKind::kAuto;
-    int dense_max_nodes = 513;        // kAuto uses the reused dense LU up to this many
+    int dense_max_nodes = 257;        // kAuto uses the reused dense LU up to this many
                                       // nodes, Newton-Krylov above [-] (measured switch
                                       // point: docs/performance.md)
     int upwind_order = 2;             // Couette-term upwinding: 1 or 2 [-]

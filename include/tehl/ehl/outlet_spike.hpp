@@ -26,8 +26,9 @@ struct OutletSpike {
 constexpr double kSpikeResolvedCells = 20.0;
 
 // The outlet-most local maximum of p (entrainment toward +x: the outlet is the last node
-// with p > 0), if a dip separates it from the pressure upstream and its prominence is at
-// least min_relative_prominence of max p. Width by linear interpolation of the half level.
+// with p > 1e-6 max p, above the round-off a linear solve leaves on cavitated nodes), if a dip
+// separates it from the pressure upstream and its prominence is at least min_relative_prominence of
+// max p. Width by linear interpolation of the half level.
 OutletSpike FindOutletSpike(const Eigen::VectorXd& p_pa,
                             double x_start_m,
                             double dx_m,
