@@ -3,13 +3,25 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <random>
 #include <stdexcept>
 #include <vector>
 
 namespace tehl::internal {
 namespace {
 
-constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '2'};
+constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '3'};
+constexpr char kRowsMagic[8] = {'T', 'E', 'H', 'L', 'R', 'O', 'W', '1'};
+constexpr std::int64_t kRowsHeaderBytes = sizeof kRowsMagic + sizeof(std::uint64_t);
+
+// The profile arrays of a result, in journal order.
+std::array<std::vector<std::vector<double>>*, 6> Profiles(MeshCycleResult& r) {
+  return {&r.p_pa, &r.h_m, &r.t_mid_k, &r.t1_k, &r.t2_k, &r.t_field_k};
+}
+std::array<const std::vector<std::vector<double>>*, 6> Profiles(const MeshCycleResult& r) {
+  return {&r.p_pa, &r.h_m, &r.t_mid_k, &r.t1_k, &r.t2_k, &r.t_field_k};
+}
 
 // Sequential binary writer / reader of the few types a checkpoint holds.
 class Out {
@@ -167,39 +179,114 @@ std::uint64_t CaseFingerprint(const std::string& text) {
   return h;
 }
 
-void WriteCheckpoint(const std::string& path, const MeshCycleCheckpoint& c) {
+std::string CheckpointRowsPath(const std::string& checkpoint_path) {
+  return checkpoint_path + ".rows";
+}
+
+CheckpointWriter::CheckpointWriter(std::string checkpoint_path)
+    : path_(std::move(checkpoint_path)) {}
+
+void CheckpointWriter::ContinueFrom(const MeshCycleCheckpoint& c) {
+  journal_id_ = c.journal_id;
+  journal_bytes_ = c.journal_bytes;
+  written_[0] = static_cast<std::int64_t>(c.result.steps.size());
+  const auto profiles = Profiles(c.result);
+  for (size_t a = 0; a < profiles.size(); ++a)
+    written_[a + 1] = static_cast<std::int64_t>(profiles[a]->size());
+}
+
+void CheckpointWriter::Write(std::uint64_t fingerprint,
+                             int next_step,
+                             double elapsed_s,
+                             const MeshCycleResult& r,
+                             const FilmState& s,
+                             const LineContactSolver::TransientHistory& history) {
+  // 1. The journal: the rows since the last checkpoint, appended past the committed length.
+  const std::string rows_path = CheckpointRowsPath(path_);
+  Out chunk;
+  if (journal_bytes_ == 0) {
+    std::random_device rd;
+    journal_id_ = (static_cast<std::uint64_t>(rd()) << 32) ^ rd() ^
+                  static_cast<std::uint64_t>(std::hash<std::string>{}(path_));
+    chunk.Raw(kRowsMagic, sizeof kRowsMagic);
+    chunk.I(static_cast<std::int64_t>(journal_id_));
+  }
+  std::array<std::int64_t, 7> now{};
+  now[0] = static_cast<std::int64_t>(r.steps.size());
+  chunk.I(now[0] - written_[0]);
+  for (std::int64_t k = written_[0]; k < now[0]; ++k) PutStep(chunk, r.steps[k]);
+  const auto profiles = Profiles(r);
+  for (size_t a = 0; a < profiles.size(); ++a) {
+    now[a + 1] = static_cast<std::int64_t>(profiles[a]->size());
+    chunk.I(now[a + 1] - written_[a + 1]);
+    for (std::int64_t k = written_[a + 1]; k < now[a + 1]; ++k) chunk.V((*profiles[a])[k]);
+  }
+  {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (journal_bytes_ > 0 && fs::exists(rows_path, ec) &&
+        static_cast<std::int64_t>(fs::file_size(rows_path, ec)) > journal_bytes_)
+      fs::resize_file(rows_path, static_cast<std::uintmax_t>(journal_bytes_));  // uncommitted tail
+    std::ofstream f(rows_path,
+                    std::ios::binary | (journal_bytes_ == 0 ? std::ios::trunc : std::ios::app));
+    f.write(chunk.bytes().data(), static_cast<std::streamsize>(chunk.bytes().size()));
+    f.flush();
+    if (!f) throw std::runtime_error("cannot write the checkpoint journal " + rows_path);
+  }
+  const std::int64_t committed = journal_bytes_ + static_cast<std::int64_t>(chunk.bytes().size());
+
+  // 2. The checkpoint proper, which commits the journal up to `committed`.
   Out o;
   o.Raw(kMagic, sizeof kMagic);
-  o.I(static_cast<std::int64_t>(c.fingerprint));
-  o.I(c.next_step);
-  o.F(c.elapsed_s);
-  const MeshCycleResult& r = c.result;
-  o.I(static_cast<std::int64_t>(r.steps.size()));
-  for (const auto& k : r.steps) PutStep(o, k);
-  for (const auto* v : {&r.p_pa, &r.h_m, &r.t_mid_k, &r.t1_k, &r.t2_k, &r.t_field_k}) o.VV(*v);
-  const FilmState& s = c.state;
+  o.I(static_cast<std::int64_t>(fingerprint));
+  o.I(next_step);
+  o.F(elapsed_s);
+  o.I(static_cast<std::int64_t>(journal_id_));
+  o.I(committed);
+  for (std::int64_t n : now) o.I(n);
   o.V(s.p_pa);
   o.V(s.h_m);
   for (double v : {s.h0_m, s.time_s, s.travel1_m, s.travel2_m}) o.F(v);
   const FilmTemperature& t = s.temperature;
   o.M(t.t_k);
   for (const auto* v : {&t.t1_k, &t.t2_k, &t.q1_w_m2, &t.q2_w_m2}) o.V(*v);
-  o.I(c.history.levels);
-  o.V(c.history.q1);
-  o.V(c.history.q2);
-  o.F(c.history.dt_prev_s);
-  PutConditions(o, c.history.c_prev);
-  o.M(c.history.t_prev_k);
+  o.I(history.levels);
+  o.V(history.q1);
+  o.V(history.q2);
+  o.F(history.dt_prev_s);
+  PutConditions(o, history.c_prev);
+  o.M(history.t_prev_k);
 
-  const std::string tmp = path + ".part";
+  const std::string tmp = path_ + ".part";
   {
     std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
     f.write(o.bytes().data(), static_cast<std::streamsize>(o.bytes().size()));
     f.flush();
     if (!f) throw std::runtime_error("cannot write the checkpoint " + tmp);
   }
-  std::filesystem::rename(tmp, path);
+  std::filesystem::rename(tmp, path_);
+  journal_bytes_ = committed;
+  written_ = now;
 }
+
+void CheckpointWriter::Remove() const {
+  std::error_code ignored;
+  std::filesystem::remove(path_, ignored);
+  std::filesystem::remove(CheckpointRowsPath(path_), ignored);
+}
+
+namespace {
+
+std::optional<std::vector<char>> ReadPrefix(const std::string& path, std::int64_t bytes) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f || bytes < 0) return std::nullopt;
+  std::vector<char> b(static_cast<size_t>(bytes));
+  f.read(b.data(), bytes);
+  if (f.gcount() != bytes) return std::nullopt;
+  return b;
+}
+
+}  // namespace
 
 std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
@@ -214,10 +301,10 @@ std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path) {
     c.fingerprint = static_cast<std::uint64_t>(in.I());
     c.next_step = static_cast<int>(in.I());
     c.elapsed_s = in.F();
-    MeshCycleResult& r = c.result;
-    r.steps.resize(static_cast<size_t>(in.Count()));
-    for (auto& k : r.steps) k = GetStep(in);
-    for (auto* v : {&r.p_pa, &r.h_m, &r.t_mid_k, &r.t1_k, &r.t2_k, &r.t_field_k}) *v = in.VV();
+    c.journal_id = static_cast<std::uint64_t>(in.I());
+    c.journal_bytes = in.I();
+    std::array<std::int64_t, 7> counts{};
+    for (auto& n : counts) n = in.I();
     FilmState& s = c.state;
     s.p_pa = in.E();
     s.h_m = in.E();
@@ -231,7 +318,25 @@ std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path) {
     c.history.dt_prev_s = in.F();
     c.history.c_prev = GetConditions(in);
     c.history.t_prev_k = in.M();
-    if (!in.done()) return std::nullopt;
+    if (!in.done() || c.journal_bytes < kRowsHeaderBytes) return std::nullopt;
+
+    // The committed part of the journal: its header, then one chunk per checkpoint.
+    std::optional<std::vector<char>> rows = ReadPrefix(CheckpointRowsPath(path), c.journal_bytes);
+    if (!rows) return std::nullopt;
+    In j(std::move(*rows));
+    j.Raw(magic, sizeof magic);
+    if (std::memcmp(magic, kRowsMagic, sizeof magic) != 0) return std::nullopt;
+    if (static_cast<std::uint64_t>(j.I()) != c.journal_id) return std::nullopt;
+    MeshCycleResult& r = c.result;
+    const auto profiles = Profiles(r);
+    while (!j.done()) {
+      for (std::int64_t k = j.Count(); k > 0; --k) r.steps.push_back(GetStep(j));
+      for (auto* a : profiles)
+        for (std::int64_t k = j.Count(); k > 0; --k) a->push_back(j.V());
+    }
+    if (static_cast<std::int64_t>(r.steps.size()) != counts[0]) return std::nullopt;
+    for (size_t a = 0; a < profiles.size(); ++a)
+      if (static_cast<std::int64_t>(profiles[a]->size()) != counts[a + 1]) return std::nullopt;
     return c;
   } catch (const std::exception&) {
     return std::nullopt;

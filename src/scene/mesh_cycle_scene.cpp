@@ -227,12 +227,15 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   const std::uint64_t fingerprint = internal::CaseFingerprint(doc.ToToml());
   size_t first = 1;
   double elapsed_before = 0;
+  std::optional<internal::CheckpointWriter> checkpoints;
+  if (!checkpoint_path.empty()) checkpoints.emplace(checkpoint_path);
   if (ro.resume && !checkpoint_path.empty()) {
     std::optional<internal::MeshCycleCheckpoint> ck = internal::ReadCheckpoint(checkpoint_path);
     if (ck && ck->fingerprint == fingerprint && ck->next_step >= 1 &&
         static_cast<size_t>(ck->next_step) < s_steps.size() &&
         ck->result.steps.size() == static_cast<size_t>(ck->next_step) &&
         ck->state.p_pa.size() == grid.size()) {
+      checkpoints->ContinueFrom(*ck);
       r.steps = std::move(ck->result.steps);
       for (auto [to, from] : {std::pair{&r.p_pa, &ck->result.p_pa}, {&r.h_m, &ck->result.h_m},
                               {&r.t_mid_k, &ck->result.t_mid_k}, {&r.t1_k, &ck->result.t1_k},
@@ -266,22 +269,10 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
       const double dt = (s_steps[k] - s_steps[k - 1]) / path.contact_speed_m_s();
       record(st, solver.Step(c, dt, &state));
       if (!r.steps.back().summary.usable()) break;
-      if (!checkpoint_path.empty() && ro.checkpoint_every > 0 && k % ro.checkpoint_every == 0 &&
+      if (checkpoints && ro.checkpoint_every > 0 && k % ro.checkpoint_every == 0 &&
           k + 1 < s_steps.size()) {
-        internal::MeshCycleCheckpoint ck;
-        ck.fingerprint = fingerprint;
-        ck.next_step = static_cast<int>(k + 1);
-        ck.elapsed_s = elapsed();
-        ck.result.steps = r.steps;
-        ck.result.p_pa = r.p_pa;
-        ck.result.h_m = r.h_m;
-        ck.result.t_mid_k = r.t_mid_k;
-        ck.result.t1_k = r.t1_k;
-        ck.result.t2_k = r.t2_k;
-        ck.result.t_field_k = r.t_field_k;
-        ck.state = state;
-        ck.history = solver.SaveTransient();
-        internal::WriteCheckpoint(checkpoint_path, ck);
+        checkpoints->Write(fingerprint, static_cast<int>(k + 1), elapsed(), r, state,
+                           solver.SaveTransient());
         // For the --resume tests: with TEHL_STOP_AFTER_CHECKPOINT set, the process stops
         // itself once the checkpoint is on disk, so a test can SIGKILL it at a known point.
         if (std::getenv("TEHL_STOP_AFTER_CHECKPOINT") != nullptr) raise(SIGSTOP);
@@ -294,8 +285,7 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   if (h5) {
     internal::FinishMeshCycleHdf5(*h5, r, doc.Bool("output", "profiles"));
     r.hdf5_path = h5->final_path();
-    std::error_code ignored;
-    fs::remove(checkpoint_path, ignored);  // the result is complete: the checkpoint is spent
+    checkpoints->Remove();  // the result is complete: the checkpoint is spent
     if (doc.Bool("output", "csv")) {
       r.csv_path = csv_path;
       internal::WriteMeshCycleCsv(r.csv_path, r);

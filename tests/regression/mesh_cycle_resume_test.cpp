@@ -109,6 +109,7 @@ TEST_P(MeshCycleResume, KilledRunResumesToTheUninterruptedResult) {
   ExpectSameCycle(ref, resumed, thermal);
   EXPECT_TRUE(fs::exists(dir + "/" + stem + ".h5"));
   EXPECT_FALSE(fs::exists(dir + "/" + stem + ".checkpoint"));  // spent
+  EXPECT_FALSE(fs::exists(dir + "/" + stem + ".checkpoint.rows"));
 
   // A complete result is left alone.
   const auto mtime = fs::last_write_time(dir + "/" + stem + ".h5");
