@@ -6,6 +6,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -165,6 +167,9 @@ class LineContactSolver::Impl {
   Eigen::VectorXd x2_, row_weight_;
   Eigen::VectorXd diagonal_;  // UpdateRowWeights: the Jacobian's diagonal [1/Pa scaled r]
   mutable Eigen::VectorXd heights_;
+  // The travels (surface 1, 2) heights_ was sampled at [m]; NaN: not sampled yet.
+  mutable std::array<double, 2> heights_travel_m_ = {std::numeric_limits<double>::quiet_NaN(),
+                                                     std::numeric_limits<double>::quiet_NaN()};
   std::vector<char> cavitated_;
   History hist_;
   std::unique_ptr<Impl> coarse_;                // grid sequencing, built on first use
