@@ -72,6 +72,13 @@ void FilmField::Begin(const ContactConditions& c, const FilmState& s) {
   }
 }
 
+void FilmField::RestartRheology(const ContactConditions& c, const FilmState& s, double relaxation) {
+  if (!eyring_) return;
+  factor_.setOnes(grid_.size(), nz_);
+  if (relaxation > 0 && s.valid() && s.p_pa.size() == grid_.size())
+    UpdateRheology(c, s, relaxation);
+}
+
 double FilmField::Slope(const Eigen::VectorXd& p, int i) const {
   const int n = grid_.size();
   const double dx = grid_.dx_m();

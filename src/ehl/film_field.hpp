@@ -47,6 +47,11 @@ class FilmField {
   // Eyring factor is recomputed from the state (1 for a state without pressure).
   void Begin(const ContactConditions& c, const FilmState& s);
 
+  // The Eyring factor started again from 1 and moved `relaxation` of the way (in log) to that
+  // of the state (0: Newtonian at the current temperature): the fallback of a coupled solve
+  // whose first pressure solve failed with the factor of its start in full.
+  void RestartRheology(const ContactConditions& c, const FilmState& s, double relaxation);
+
   // Recomputes the Eyring factor from a pressure solution, moving log f by `relaxation` of
   // the way to its target (1 = the factor of this state exactly); returns the largest
   // distance |log f_target - log f| before the move [-] (0 when Newtonian).
