@@ -17,7 +17,22 @@ double EyringWallStress(const EyringLaw& law,
     hi_limit = law.tau_l * (1 - 1e-9) - std::max(0.0, g);
     if (lo_limit >= hi_limit) return 0.5 * (lo_limit + hi_limit);
   }
+  double inv_mean = 0;
+  for (int j = 0; j < nz; ++j) inv_mean += ((j == 0 || j == nz - 1) ? 0.5 : 1.0) / eta[j];
+  const double eta_h = (nz - 1.0) / inv_mean;
+  // Without a pressure gradient the stress is uniform across the film and the rate is
+  // Rate(tau, 1) / eta(xi): the integral is h Rate(tau, 1) / eta_h, one sinh per evaluation
+  // instead of nz (the Eyring factor of a thermal Ree-Eyring film calls this at every node of
+  // every coupling iteration; the sinh and its expm1 were a quarter of such a run). Without a
+  // limiting stress its root is the asinh law itself.
+  const bool uniform = g == 0;
+  if (uniform && !(law.tau_l > 0)) return law.tau0 * std::asinh(eta_h * du / (h * law.tau0));
   auto residual = [&](double t1, double* slope) {
+    const double scale = h / (nz - 1.0);
+    if (uniform) {
+      *slope = law.Slope(t1, 1.0) * inv_mean * scale;
+      return law.Rate(t1, 1.0) * inv_mean * scale - du;
+    }
     double f = 0, d = 0;
     for (int j = 0; j < nz; ++j) {
       const double w = (j == 0 || j == nz - 1) ? 0.5 : 1.0;
@@ -25,13 +40,9 @@ double EyringWallStress(const EyringLaw& law,
       f += w * law.Rate(tau, eta[j]);
       d += w * law.Slope(tau, eta[j]);
     }
-    const double scale = h / (nz - 1.0);
     *slope = d * scale;
     return f * scale - du;
   };
-  double inv_mean = 0;
-  for (int j = 0; j < nz; ++j) inv_mean += ((j == 0 || j == nz - 1) ? 0.5 : 1.0) / eta[j];
-  const double eta_h = (nz - 1.0) / inv_mean;
   double t = law.tau0 * std::asinh(eta_h * du / (h * law.tau0)) - 0.5 * g;
   t = std::clamp(t, lo_limit, hi_limit);
   // Grow a bracket [lo, hi] around the root.

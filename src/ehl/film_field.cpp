@@ -118,11 +118,12 @@ double FilmField::UpdateRheology(const ContactConditions& c,
                     ? e.limiting_stress_pa + e.limiting_stress_slope * std::max(s.p_pa[i], 0.0)
                     : 0.0;
     const double t1 = EyringWallStress(law, eta.data(), nz_, h, dpdx, du, 0.0);
+    // The stress t1 is uniform across the film (dp/dx = 0 here), so f = tau / (eta gdot) =
+    // t1 / Rate(t1, 1) is the same at every xi.
+    const double rate = law.Rate(t1, 1.0);
+    const double f = std::abs(rate) > 0 ? t1 / rate : 1.0;
+    const double target = std::isfinite(f) && f > 0 ? std::min(f, 1.0) : 1.0;
     for (int j = 0; j < nz_; ++j) {
-      const double t = t1 + h * dpdx * j / (nz_ - 1.0);
-      const double rate = law.Rate(t, eta[j]);
-      const double f = std::abs(rate) > 0 ? t / (eta[j] * rate) : 1.0;
-      const double target = std::isfinite(f) && f > 0 ? std::min(f, 1.0) : 1.0;
       // Under-relaxed in log f: the factor spans many decades across the contact.
       const double step = std::log(target / factor_(i, j));
       change = std::max(change, std::abs(step));

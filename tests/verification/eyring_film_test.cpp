@@ -43,6 +43,39 @@ TEST(EyringWallStress, UniformFilmWithoutGradientIsTheAsinhLaw) {
   }
 }
 
+// A film whose viscosity varies across it (a thermal film), without pressure gradient: the
+// stress is uniform, gdot(xi) = tau0 sinh(tau / tau0) / eta(xi) [/ (1 - (tau / tau_L)^2)], so
+// h int gdot dxi = du gives the asinh law with the harmonic mean viscosity (trapezoidal in
+// xi, as the solver integrates) and, with a limiting stress, a root of that integral, checked
+// here by summing the rates node by node.
+TEST(EyringWallStress, VaryingViscosityWithoutGradientSolvesTheFilmIntegral) {
+  const int nz = 11;
+  const double h = 8e-7;
+  std::vector<double> etas(nz);
+  for (int j = 0; j < nz; ++j) etas[j] = 30.0 * std::exp(-0.4 * j);  // hotter towards xi = 1
+  double inv_mean = 0;
+  for (int j = 0; j < nz; ++j) inv_mean += ((j == 0 || j == nz - 1) ? 0.5 : 1.0) / etas[j];
+  const double eta_h = (nz - 1.0) / inv_mean;
+  for (double tau_l : {0.0, 3e7, 8e6}) {
+    EyringLaw law;
+    law.tau0 = 5e6;
+    law.tau_l = tau_l;
+    for (double du : {-2.0, 1e-3, 0.3, 5.0}) {
+      const double t = EyringWallStress(law, etas.data(), nz, h, 0.0, du, 0.0);
+      if (tau_l == 0) {
+        const double exact = law.tau0 * std::asinh(eta_h * du / (h * law.tau0));
+        EXPECT_NEAR(t, exact, 1e-12 * std::abs(exact)) << "du " << du;
+      }
+      if (tau_l > 0) EXPECT_LT(std::abs(t), tau_l) << "du " << du;
+      double flow = 0;
+      for (int j = 0; j < nz; ++j)
+        flow += ((j == 0 || j == nz - 1) ? 0.5 : 1.0) * law.Rate(t, etas[j]);
+      flow *= h / (nz - 1.0);
+      EXPECT_NEAR(flow, du, 1e-9 * std::abs(du)) << "tau_l " << tau_l << " du " << du;
+    }
+  }
+}
+
 TEST(EyringWallStress, LargeEyringStressIsNewtonianWithPressureGradient) {
   EyringLaw law;
   law.tau0 = 1e11;  // sinh(s) = s (1 + s^2 / 6 + ...): s <= 7e-5, a relative 1e-9 here
