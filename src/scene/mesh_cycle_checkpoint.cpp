@@ -270,9 +270,10 @@ void CheckpointWriter::Write(std::uint64_t fingerprint,
 }
 
 void CheckpointWriter::Remove() const {
+  namespace fs = std::filesystem;
   std::error_code ignored;
-  std::filesystem::remove(path_, ignored);
-  std::filesystem::remove(CheckpointRowsPath(path_), ignored);
+  for (const std::string& p : {path_, CheckpointRowsPath(path_)})
+    if (fs::is_regular_file(p, ignored)) fs::remove(p, ignored);  // only files it could write
 }
 
 namespace {

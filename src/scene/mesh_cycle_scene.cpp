@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 
 #include "scene/case_reader.hpp"
@@ -228,6 +229,7 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   size_t first = 1;
   double elapsed_before = 0;
   std::optional<internal::CheckpointWriter> checkpoints;
+  bool checkpoints_off = false;  // a checkpoint could not be written
   if (!checkpoint_path.empty()) checkpoints.emplace(checkpoint_path);
   if (ro.resume && !checkpoint_path.empty()) {
     std::optional<internal::MeshCycleCheckpoint> ck = internal::ReadCheckpoint(checkpoint_path);
@@ -269,10 +271,19 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
       const double dt = (s_steps[k] - s_steps[k - 1]) / path.contact_speed_m_s();
       record(st, solver.Step(c, dt, &state));
       if (!r.steps.back().summary.usable()) break;
-      if (checkpoints && ro.checkpoint_every > 0 && k % ro.checkpoint_every == 0 &&
-          k + 1 < s_steps.size()) {
-        checkpoints->Write(fingerprint, static_cast<int>(k + 1), elapsed(), r, state,
-                           solver.SaveTransient());
+      if (checkpoints && !checkpoints_off && ro.checkpoint_every > 0 &&
+          k % ro.checkpoint_every == 0 && k + 1 < s_steps.size()) {
+        // A checkpoint is a convenience: one that cannot be written (a full disk, a path
+        // taken by a folder) is reported once and the run goes on without checkpoints.
+        try {
+          checkpoints->Write(fingerprint, static_cast<int>(k + 1), elapsed(), r, state,
+                             solver.SaveTransient());
+        } catch (const std::exception& e) {
+          checkpoints_off = true;
+          std::fprintf(stderr, "%swarning: %s; the run goes on without checkpoints\n",
+                       !ro.quiet && tty ? "\n" : "", e.what());
+          continue;
+        }
         // For the --resume tests: with TEHL_STOP_AFTER_CHECKPOINT set, the process stops
         // itself once the checkpoint is on disk, so a test can SIGKILL it at a known point.
         if (std::getenv("TEHL_STOP_AFTER_CHECKPOINT") != nullptr) raise(SIGSTOP);

@@ -120,6 +120,20 @@ TEST_P(MeshCycleResume, KilledRunResumesToTheUninterruptedResult) {
 
 INSTANTIATE_TEST_SUITE_P(IsothermalAndThermal, MeshCycleResume, ::testing::Bool());
 
+// A checkpoint that cannot be written (here a folder in the way of the journal) does not stop
+// the run: it goes on without checkpoints and writes its result.
+TEST(MeshCycleResumeGuard, AnUnwritableCheckpointDoesNotStopTheRun) {
+  const std::string dir = TempDirFor("resume_unwritable");
+  const std::string a = ReducedCase("seed004_sae40", {{"grid_points", "129"}, {"steps", "20"}});
+  const std::string stem = fs::path(a).stem().string();
+  fs::create_directories(dir + "/" + stem + ".checkpoint.rows");
+  MeshCycleResult r;
+  ASSERT_NO_THROW(r = RunInProcess(a, dir, false));
+  EXPECT_TRUE(r.converged());
+  EXPECT_TRUE(fs::exists(dir + "/" + stem + ".h5"));
+  EXPECT_FALSE(fs::exists(dir + "/" + stem + ".checkpoint"));
+}
+
 // A checkpoint of another case is not used: the run starts at A.
 TEST(MeshCycleResumeGuard, CheckpointOfAnotherCaseIsIgnored) {
   const std::string dir = TempDirFor("resume_other");
