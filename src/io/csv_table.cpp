@@ -2,15 +2,14 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
+#include "io/atomic_file.hpp"
 #include "tehl/io/hdf5_writer.hpp"
 
 namespace tehl::internal {
 
 void WriteCsvTable(const std::string& path, const std::vector<CsvColumn>& columns) {
-  namespace fs = std::filesystem;
   const size_t rows = columns.empty() ? 0 : columns.front().values.size();
   for (const auto& c : columns) {
     if (c.values.size() != rows)
@@ -30,20 +29,7 @@ void WriteCsvTable(const std::string& path, const std::vector<CsvColumn>& column
     }
     text += "\n";
   }
-  const fs::path final_path(path);
-  if (!final_path.parent_path().empty()) fs::create_directories(final_path.parent_path());
-  const std::string tmp = path + ".part";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw std::runtime_error("cannot write " + tmp);
-    }
-  }
-  fs::rename(tmp, final_path);
+  WriteTextAtomically(path, text);
 }
 
 }  // namespace tehl::internal

@@ -14,7 +14,8 @@ struct CsvColumn {
 
 // Writes the columns (all of one length) with a header line, "%.9e" per value. Throws
 // NonFiniteError (tehl/io/hdf5_writer.hpp) naming the column and row of a NaN or Inf, and
-// std::runtime_error when the file cannot be written; nothing is left under `path` then.
+// std::filesystem::filesystem_error when the file cannot be written (io/atomic_file.hpp);
+// nothing is left under `path` then.
 void WriteCsvTable(const std::string& path, const std::vector<CsvColumn>& columns);
 
 }  // namespace tehl::internal

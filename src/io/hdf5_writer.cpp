@@ -28,6 +28,14 @@ using Hdf5Lock = std::lock_guard<std::recursive_mutex>;
   throw std::runtime_error("HDF5 result file: " + what);
 }
 
+// A file that cannot be created, written, closed or renamed: the folder or the disk, not a
+// defect (a full disk, a folder in the way). The command line reports it as such (exit 2).
+// (HDF5 does not say why: an input/output error.)
+[[noreturn]] void FailIo(const std::string& what, const std::string& path) {
+  throw fs::filesystem_error("HDF5 result file: " + what, path,
+                             std::make_error_code(std::errc::io_error));
+}
+
 // Closes an HDF5 handle of any kind when it goes out of scope.
 class Handle {
  public:
@@ -119,7 +127,7 @@ class Hdf5Writer::Impl {
     bool empty = false;
     for (int i = 0; i < rank; ++i) empty = empty || dims[i] == 0;
     if (!empty && H5Dwrite(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
-      Fail("cannot write dataset " + dataset);
+      FailIo("cannot write dataset " + dataset, Temporary());
     WriteStringAttribute(set.get(), "unit", unit);
     WriteStringAttribute(set.get(), "meaning", meaning);
   }
@@ -132,7 +140,7 @@ Hdf5Writer::Hdf5Writer(const std::string& final_path) : impl_(std::make_unique<I
   if (!parent.empty()) fs::create_directories(parent);
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not stderr noise
   impl_->file = H5Fcreate(impl_->Temporary().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (impl_->file < 0) Fail("cannot create " + impl_->Temporary());
+  if (impl_->file < 0) FailIo("cannot create " + impl_->Temporary(), impl_->Temporary());
 }
 
 Hdf5Writer::~Hdf5Writer() {
@@ -196,7 +204,7 @@ void Hdf5Writer::WriteStrings(const std::string& dataset,
   if (!set.ok()) Fail("cannot create dataset " + dataset);
   if (!values.empty() &&
       H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0)
-    Fail("cannot write dataset " + dataset);
+    FailIo("cannot write dataset " + dataset, temporary_path());
   WriteStringAttribute(set.get(), "unit", "");
   WriteStringAttribute(set.get(), "meaning", meaning);
 }
@@ -214,7 +222,7 @@ void Hdf5Writer::WriteText(const std::string& dataset,
              H5Dclose);
   const char* p = text.c_str();
   if (!set.ok() || H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &p) < 0)
-    Fail("cannot write dataset " + dataset);
+    FailIo("cannot write dataset " + dataset, temporary_path());
   WriteStringAttribute(set.get(), "unit", "");
   WriteStringAttribute(set.get(), "meaning", meaning);
 }
@@ -254,11 +262,12 @@ void Hdf5Writer::Commit() {
   const bool flushed = H5Fflush(impl_->file, H5F_SCOPE_GLOBAL) >= 0;
   const bool closed = H5Fclose(impl_->file) >= 0;
   impl_->file = -1;
-  if (!flushed || !closed) Fail("cannot close " + temporary_path());
+  if (!flushed || !closed) FailIo("cannot close " + temporary_path(), temporary_path());
   std::error_code ec;
   fs::rename(temporary_path(), impl_->final_path, ec);
   if (ec)
-    Fail("cannot rename " + temporary_path() + " to " + impl_->final_path + ": " + ec.message());
+    throw fs::filesystem_error("HDF5 result file: cannot rename " + temporary_path(),
+                               temporary_path(), impl_->final_path, ec);
   impl_->committed = true;
 }
 

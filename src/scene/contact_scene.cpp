@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "io/atomic_file.hpp"
 #include "scene/case_reader.hpp"
 #include "scene/contact_case.hpp"
 #include "scene/contact_csv.hpp"
@@ -29,19 +30,6 @@ double Interpolate(const std::vector<double>& t, const std::vector<double>& v, d
   const size_t k = static_cast<size_t>(it - t.begin()) - 1;
   const double f = (x - t[k]) / (t[k + 1] - t[k]);
   return (1 - f) * v[k] + f * v[k + 1];
-}
-
-// Writes `text` to `path` through a temporary file renamed when complete.
-void WriteAtomically(const fs::path& path, const std::string& text) {
-  fs::create_directories(path.parent_path().empty() ? fs::path(".") : path.parent_path());
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, path);
 }
 
 }  // namespace
@@ -145,8 +133,8 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
       std::vector<double>(state.h_m.data(), state.h_m.data() + state.h_m.size()), t_mid);
   const std::string history = internal::ContactStepsCsv(result.history_csv, result.steps);
   // The steps file marks a finished run (a study's result file): it is written last.
-  WriteAtomically(result.profile_csv, profile);
-  WriteAtomically(result.history_csv, history);
+  internal::WriteTextAtomically(result.profile_csv, profile);
+  internal::WriteTextAtomically(result.history_csv, history);
   return result;
 }
 

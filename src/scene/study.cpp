@@ -7,6 +7,7 @@
 #include <fstream>
 #include <set>
 
+#include "io/atomic_file.hpp"
 #include "scene/case_reader.hpp"
 #include "scene/film_case.hpp"
 #include "scene/gear_case.hpp"
@@ -198,15 +199,7 @@ Study ReadStudy(const std::string& study_path, const StudyReadOptions& options) 
 
 void WriteSceneFiles(const Study& study) {
   fs::create_directories(study.ScenesDir());
-  for (const auto& sc : study.scenes) {
-    const std::string part = sc.case_path + ".part";
-    {
-      std::ofstream out(part, std::ios::binary | std::ios::trunc);
-      out << sc.case_text;
-      if (!out) throw std::runtime_error("cannot write " + part);
-    }
-    fs::rename(part, sc.case_path);
-  }
+  for (const auto& sc : study.scenes) internal::WriteTextAtomically(sc.case_path, sc.case_text);
 }
 
 }  // namespace tehl

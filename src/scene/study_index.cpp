@@ -9,6 +9,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "io/atomic_file.hpp"
 #include "io/hdf5_lock.hpp"
 #include "tehl/io/hdf5_writer.hpp"
 
@@ -372,13 +373,7 @@ std::vector<std::string> WriteStudyIndex(const Study& study, std::vector<SceneRo
     csv << ',' << r.steps << ',' << CsvText(r.status) << ',' << (r.computed ? 1 : 0) << ','
         << CsvText(r.result_path) << '\n';
   }
-  const std::string part = csv_path + ".part";
-  {
-    std::ofstream out(part, std::ios::binary | std::ios::trunc);
-    out << csv.str();
-    if (!out) throw std::runtime_error("cannot write " + part);
-  }
-  fs::rename(part, csv_path);
+  internal::WriteTextAtomically(csv_path, csv.str());
   return {h5_path, csv_path};
 }
 

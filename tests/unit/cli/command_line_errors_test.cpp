@@ -51,6 +51,23 @@ TEST(CommandLineErrors, AnOutputFolderThatIsAFileIsBadInput) {
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
 }
 
+// A result table that cannot be written once the run is done (here a folder in the way of the
+// profile CSV's temporary name; a full disk fails the same way) is the environment's fault:
+// exit 2 naming the path, as for an output folder that is a file, not an internal error.
+TEST(CommandLineErrors, AResultFileThatCannotBeWrittenIsBadInput) {
+  const std::string dir = testing::UniqueTempPath("blocked_results");
+  const std::string blocked = dir + "/disc_steady_profile.csv.part";
+  fs::create_directories(blocked);
+  const testing::RunResult r =
+      testing::RunTehl("run -q '" + SourcePath("cases/disc_steady.toml") + "' -o '" + dir + "'");
+  fs::remove_all(dir);
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("cannot write the results"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(blocked), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+}
+
 TEST(CommandLineErrors, AFolderGivenAsTheCaseFileIsNamedAsAFolder) {
   const std::string dir = testing::UniqueTempPath("case_folder.toml");
   fs::create_directories(dir);

@@ -46,5 +46,21 @@ TEST(CsvTable, NonFiniteValueIsRefusedAndNothingIsWritten) {
   EXPECT_FALSE(fs::exists(path));
 }
 
+// A table that cannot be written (here a folder in the way of its temporary file) is an
+// error of the folder, not of tehl: std::filesystem::filesystem_error naming the path, which
+// the command line reports with exit code 2.
+TEST(CsvTable, AnUnwritablePathIsAFilesystemError) {
+  const std::string path = testing::ScratchPath("tehl_csv", "blocked.csv");
+  fs::create_directories(path + ".part");
+  try {
+    WriteCsvTable(path, {{"s_m", {0.0}}});
+    FAIL() << "written";
+  } catch (const fs::filesystem_error& e) {
+    EXPECT_EQ(e.path1().string(), path + ".part");
+    EXPECT_TRUE(e.code()) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(path));
+}
+
 }  // namespace
 }  // namespace tehl::internal

@@ -88,6 +88,22 @@ TEST(Hdf5Writer, RefusesNonFiniteValuesNamingTheDataset) {
   H5Fclose(f);
 }
 
+// A result file that cannot be created (a folder in the way of its temporary name) is an
+// error of the folder: std::filesystem::filesystem_error naming the path (exit code 2 on the
+// command line), not an internal error.
+TEST(Hdf5Writer, AFileThatCannotBeCreatedIsAFilesystemError) {
+  const std::string path = TempFile("blocked.h5");
+  fs::create_directories(path + ".part");
+  try {
+    Hdf5Writer w(path);
+    FAIL() << "created";
+  } catch (const fs::filesystem_error& e) {
+    EXPECT_EQ(e.path1().string(), path + ".part");
+    EXPECT_TRUE(e.code()) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(path));
+}
+
 TEST(Hdf5Writer, MismatchedMatrixShapeIsRefused) {
   Hdf5Writer w(TempFile("shape.h5"));
   EXPECT_THROW(w.WriteMatrix("/profiles/p", {1, 2, 3}, 2, 2, "Pa", "p"), std::runtime_error);
