@@ -38,17 +38,26 @@ TEST(CommandLineErrors, AMistypedCommandIsNamedWithTheAllowedOnes) {
   EXPECT_NE(r.err.find("run"), std::string::npos) << r.err;
 }
 
-TEST(CommandLineErrors, AnOutputFolderThatIsAFileIsBadInput) {
-  const std::string file = testing::UniqueTempPath("not_a_folder");
-  std::ofstream(file) << "x";
-  const testing::RunResult r =
-      testing::RunTehl("run -q '" + SourcePath("cases/disc_steady.toml") + "' -o '" + file + "'");
-  fs::remove(file);
+// `tehl run -q cases/disc_steady.toml -o DIR`.
+testing::RunResult RunDiscInto(const std::string& dir) {
+  return testing::RunTehl("run -q '" + SourcePath("cases/disc_steady.toml") + "' -o '" + dir + "'");
+}
+
+// Exit 2 with "cannot write the results" naming `path`, never an internal error.
+void ExpectCannotWrite(const testing::RunResult& r, const std::string& path) {
   ASSERT_TRUE(r.exited);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("cannot write the results"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(path), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+}
+
+TEST(CommandLineErrors, AnOutputFolderThatIsAFileIsBadInput) {
+  const std::string file = testing::UniqueTempPath("not_a_folder");
+  std::ofstream(file) << "x";
+  const testing::RunResult r = RunDiscInto(file);
+  fs::remove(file);
+  ExpectCannotWrite(r, file);
 }
 
 // A result table that cannot be written once the run is done (here a folder in the way of the
@@ -58,14 +67,9 @@ TEST(CommandLineErrors, AResultFileThatCannotBeWrittenIsBadInput) {
   const std::string dir = testing::UniqueTempPath("blocked_results");
   const std::string blocked = dir + "/disc_steady_profile.csv.part";
   fs::create_directories(blocked);
-  const testing::RunResult r =
-      testing::RunTehl("run -q '" + SourcePath("cases/disc_steady.toml") + "' -o '" + dir + "'");
+  const testing::RunResult r = RunDiscInto(dir);
   fs::remove_all(dir);
-  ASSERT_TRUE(r.exited);
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("cannot write the results"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find(blocked), std::string::npos) << r.err;
-  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  ExpectCannotWrite(r, blocked);
 }
 
 TEST(CommandLineErrors, AFolderGivenAsTheCaseFileIsNamedAsAFolder) {
