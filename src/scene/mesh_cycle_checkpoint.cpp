@@ -223,10 +223,16 @@ void CheckpointWriter::Write(std::uint64_t fingerprint,
   }
   {
     namespace fs = std::filesystem;
-    std::error_code ec;
-    if (journal_bytes_ > 0 && fs::exists(rows_path, ec) &&
-        static_cast<std::int64_t>(fs::file_size(rows_path, ec)) > journal_bytes_)
-      fs::resize_file(rows_path, static_cast<std::uintmax_t>(journal_bytes_));  // uncommitted tail
+    if (journal_bytes_ > 0) {
+      // The committed rows must still be there; an uncommitted tail is cut off.
+      std::error_code ec;
+      const std::uintmax_t size = fs::file_size(rows_path, ec);
+      if (ec || static_cast<std::int64_t>(size) < journal_bytes_)
+        throw std::runtime_error("the checkpoint journal " + rows_path +
+                                 " lost rows it had committed");
+      if (static_cast<std::int64_t>(size) > journal_bytes_)
+        fs::resize_file(rows_path, static_cast<std::uintmax_t>(journal_bytes_));
+    }
     std::ofstream f(rows_path,
                     std::ios::binary | (journal_bytes_ == 0 ? std::ios::trunc : std::ios::app));
     f.write(chunk.bytes().data(), static_cast<std::streamsize>(chunk.bytes().size()));

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 
 #include "support/scratch_path.hpp"
@@ -187,6 +188,20 @@ TEST(MeshCycleCheckpoint, TheJournalOfAnotherRunIsRefused) {
   CheckpointWriter(path).Write(5, 9, 1.0, later, State(1), History(1));
   fs::copy_file(kept, path, fs::copy_options::overwrite_existing);
   EXPECT_FALSE(ReadCheckpoint(path).has_value());
+}
+
+// A journal that lost committed rows while the run went on (deleted or cut by hand) is not
+// extended into a file that no checkpoint could read: the writer says so (the run then goes on
+// without checkpoints, tests/regression/mesh_cycle_resume_test.cpp).
+TEST(MeshCycleCheckpoint, AJournalThatLostCommittedRowsIsNotExtended) {
+  const std::string path = NewCheckpointPath();
+  CheckpointWriter w(path);
+  MeshCycleResult r;
+  for (int k = 0; k < 3; ++k) AddStep(&r, k);
+  w.Write(1, 3, 1.0, r, State(1), History(1));
+  fs::remove(CheckpointRowsPath(path));
+  AddStep(&r, 3);
+  EXPECT_THROW(w.Write(1, 4, 2.0, r, State(1), History(1)), std::runtime_error);
 }
 
 TEST(MeshCycleCheckpoint, AMissingOrShortJournalIsRefused) {
