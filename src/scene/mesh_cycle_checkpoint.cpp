@@ -1,10 +1,12 @@
 #include "scene/mesh_cycle_checkpoint.hpp"
 
+#include <unistd.h>
+
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -205,8 +207,12 @@ void CheckpointWriter::Write(std::uint64_t fingerprint,
   const std::string rows_path = CheckpointRowsPath(path_);
   Out chunk;
   if (journal_bytes_ == 0) {
-    std::random_device rd;
-    journal_id_ = (static_cast<std::uint64_t>(rd()) << 32) ^ rd() ^
+    // A new journal's identity: the clock in nanoseconds, the process and the path (no
+    // entropy source needed, which std::random_device may lack).
+    const auto now = std::chrono::system_clock::now().time_since_epoch();
+    journal_id_ = static_cast<std::uint64_t>(
+                      std::chrono::duration_cast<std::chrono::nanoseconds>(now).count()) ^
+                  (static_cast<std::uint64_t>(getpid()) << 40) ^
                   static_cast<std::uint64_t>(std::hash<std::string>{}(path_));
     chunk.Raw(kRowsMagic, sizeof kRowsMagic);
     chunk.I(static_cast<std::int64_t>(journal_id_));
