@@ -44,9 +44,23 @@ double MeshStiffnessAt(const PathOfContact& path, double s, const PairStiffnessF
 }
 
 double StiffnessLoadShare(const PathOfContact& path, double s, const PairStiffnessFn& k) {
-  const ContactPoint c = path.At(s);
-  const double own = k(c.r1_m, c.r2_m);
-  const double total = MeshStiffnessAt(path, s, k);
+  // The pair at s is one of the simultaneous contacts (returned as s itself): its stiffness
+  // enters the sum and the share, evaluated once (each is a numerical integration).
+  double own = 0, total = 0;
+  bool found = false;
+  for (double q : path.SimultaneousContacts(s)) {
+    const ContactPoint c = path.At(q);
+    const double kq = k(c.r1_m, c.r2_m);
+    total += kq;
+    if (q == s && !found) {
+      own = kq;
+      found = true;
+    }
+  }
+  if (!found) {  // s off the path (beyond the round-off guard of A and E)
+    const ContactPoint c = path.At(s);
+    own = k(c.r1_m, c.r2_m);
+  }
   return total > 0 ? own / total : 0.0;
 }
 
