@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "scene/case_reader.hpp"
+#include "tehl/ehl/inlet_truncation.hpp"
 #include "tehl/ehl/outlet_spike.hpp"
 #include "tehl/scene/contact_scene.hpp"
 #include "tehl/scene/mesh_cycle_scene.hpp"
@@ -48,6 +49,47 @@ void NoteCycleSpikes(const MeshCycleResult& r, size_t converged_steps) {
       "mm): %s\n",
       narrow, converged_steps, kSpikeResolvedCells, narrowest.width_cells,
       narrowest.pressure_pa * 1e-9, r.steps[at].s_m * 1e3, kSpikeAdvice);
+}
+
+// The inlet note: a film thinned by more than kInletNoteDeficit by the truncated inlet
+// (EstimateInletTruncation; docs/results.md, "The inlet note"), with the x_start_b that brings
+// the deficit to kInletTargetDeficit (p_in ~ |x0|^-3).
+constexpr double kInletNoteDeficit = 0.005;
+constexpr double kInletTargetDeficit = 0.002;
+constexpr const char* kInletAdvice = "with grid_points raised in proportion (same spacing)";
+
+void NoteContactInlet(const InletTruncation& t, double x_start_b) {
+  if (!t.estimated || t.film_deficit <= kInletNoteDeficit) return;
+  std::printf(
+      "note: the inlet at x_start_b = %.3g cuts off %.3g MPa of inlet pressure: the film is "
+      "about %.2g %% thinner than with an unbounded inlet (Grubin estimate, docs/results.md); "
+      "[numerics] x_start_b = %.3g %s brings that to about %.2g %%\n",
+      x_start_b, t.missing_pressure_pa * 1e-6, 100 * t.film_deficit,
+      t.InletFor(x_start_b, kInletTargetDeficit), kInletAdvice, 100 * kInletTargetDeficit);
+}
+
+void NoteCycleInlet(const MeshCycleResult& r, size_t converged_steps) {
+  const std::vector<InletTruncation> inlet = r.InletTruncations();
+  size_t worst = inlet.size();
+  for (size_t k = 0; k < converged_steps && k < inlet.size(); ++k)
+    if (inlet[k].estimated &&
+        (worst == inlet.size() || inlet[k].film_deficit > inlet[worst].film_deficit))
+      worst = k;
+  if (worst == inlet.size() || inlet[worst].film_deficit <= kInletNoteDeficit) return;
+  const size_t pitch = static_cast<size_t>(r.PitchStep());
+  std::string at_pitch;
+  if (pitch < converged_steps && pitch < inlet.size() && inlet[pitch].estimated) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "; %.2g %% at the pitch point", 100 * inlet[pitch].film_deficit);
+    at_pitch = buf;
+  }
+  std::printf(
+      "note: the inlet at x_start_b = %.3g thins the films by up to %.2g %% against an "
+      "unbounded inlet (at s = %.4g mm%s; Grubin estimate, docs/results.md): [numerics] "
+      "x_start_b = %.3g %s brings that to about %.2g %%\n",
+      r.x_start_b, 100 * inlet[worst].film_deficit, r.steps[worst].s_m * 1e3, at_pitch.c_str(),
+      inlet[worst].InletFor(r.x_start_b, kInletTargetDeficit), kInletAdvice,
+      100 * kInletTargetDeficit);
 }
 
 struct RunArgs {
@@ -95,6 +137,7 @@ int RunGear(const RunArgs& a) {
                 ok == r.steps.size() ? "" : " (converged steps)");
   }
   NoteCycleSpikes(r, ok);
+  NoteCycleInlet(r, ok);
   std::printf("wrote %s%s%s\n", r.hdf5_path.c_str(), r.csv_path.empty() ? "" : " and ",
               r.csv_path.c_str());
   if (!r.converged()) {
@@ -114,7 +157,10 @@ int RunContact(const RunArgs& a) {
   const auto& last = r.steps.back();
   std::printf("h_min = %.6g m, h_c = %.6g m, p_max = %.6g Pa\n", last.h_min_m, last.h_c_m,
               last.p_max_pa);
-  if (last.summary.usable()) NoteContactSpike(last.outlet_spike);
+  if (last.summary.usable()) {
+    NoteContactSpike(last.outlet_spike);
+    NoteContactInlet(last.inlet, r.x_start_b);
+  }
   std::printf("wrote %s and %s\n", r.profile_csv.c_str(), r.history_csv.c_str());
   if (!r.converged()) {
     std::fprintf(stderr, "tehl run: the solver did not converge: %s\n",

@@ -21,6 +21,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/fftw_wisdom.cpp
   src/ehl/surface_roughness.cpp
   src/ehl/dry_contact.cpp
+  src/ehl/inlet_truncation.cpp
   src/ehl/outlet_spike.cpp
   src/ehl/surface_temperature.cpp
   src/ehl/film_energy.cpp

@@ -40,10 +40,10 @@ std::string Cells(const std::vector<Column>& columns, size_t row) {
 }  // namespace
 
 std::string ContactStepsCsv(const std::string& file, const std::vector<ContactStepRecord>& steps) {
-  std::vector<Column> num = {{"t_s", {}},         {"w_n_per_m", {}},  {"u1_m_s", {}},
-                             {"u2_m_s", {}},      {"h_min_m", {}},    {"h_c_m", {}},
-                             {"p_max_pa", {}},    {"t_max_k", {}},    {"mu", {}},
-                             {"wall_time_s", {}}, {"spike_cells", {}}};
+  std::vector<Column> num = {{"t_s", {}},         {"w_n_per_m", {}},   {"u1_m_s", {}},
+                             {"u2_m_s", {}},      {"h_min_m", {}},     {"h_c_m", {}},
+                             {"p_max_pa", {}},    {"t_max_k", {}},     {"mu", {}},
+                             {"wall_time_s", {}}, {"spike_cells", {}}, {"inlet_deficit", {}}};
   for (const ContactStepRecord& s : steps) {
     const double row[] = {s.time_s,
                           s.load_n_per_m,
@@ -55,7 +55,8 @@ std::string ContactStepsCsv(const std::string& file, const std::vector<ContactSt
                           s.t_max_k,
                           s.friction_coefficient,
                           s.wall_time_s,
-                          s.outlet_spike.found ? s.outlet_spike.width_cells : -1.0};
+                          s.outlet_spike.found ? s.outlet_spike.width_cells : -1.0,
+                          s.inlet.estimated ? s.inlet.film_deficit : -1.0};
     for (size_t j = 0; j < num.size(); ++j) num[j].values.push_back(row[j]);
   }
   CheckColumns(file, num);

@@ -68,10 +68,12 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
                              Interpolate(in.t, in.w, t), film.inlet_temperature_k};
   };
   ContactRunResult result;
+  result.x_start_b = film.x_start_b;
   FilmState state;
   const bool thermal = film.effects.thermal;
   const int nz = film.options.film_nodes;
   using Clock = std::chrono::steady_clock;
+  const ViscosityValue inlet_law = internal::InletViscosity(film);
   auto record = [&](double t, const ContactConditions& c, const LineContactSolver::Summary& s,
                     Clock::time_point start) {
     ContactStepRecord rec;
@@ -84,6 +86,16 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
     rec.h_c_m = state.CentralFilm(grid);
     rec.p_max_pa = state.MaxPressure();
     rec.outlet_spike = FindOutletSpike(state.p_pa, grid.x_start_m(), grid.dx_m());
+    InletTruncationInputs inlet;
+    inlet.x_start_m = grid.x_start_m();
+    inlet.dx_m = grid.dx_m();
+    inlet.reduced_radius_m = r;
+    inlet.half_width_m =
+        film.effects.elastic ? LineContactHertz(c.load_n_per_m, r, in.e_prime).half_width_m : 0.0;
+    inlet.um_m_s = c.um();
+    inlet.inlet_viscosity_pa_s = inlet_law.eta_pa_s;
+    inlet.pressure_viscosity_per_pa = inlet_law.deta_dp / inlet_law.eta_pa_s;
+    rec.inlet = EstimateInletTruncation(state.p_pa, state.h_m, inlet);
     // The same quantities as the mesh cycle's /cycle/T_max and /cycle/mu (mesh_cycle_scene.cpp).
     // A failed step's film may touch (h <= 0), where friction is undefined: 0 then, and the
     // step's status column says it failed.

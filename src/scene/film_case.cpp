@@ -115,4 +115,10 @@ FilmCase ReadFilmCase(Document& doc) {
   return f;
 }
 
+ViscosityValue InletViscosity(const FilmCase& film) {
+  ViscosityValue v = film.lubricant->viscosity().Evaluate(0.0, film.inlet_temperature_k);
+  if (!film.effects.piezoviscous) v.deta_dp = 0.0;
+  return v;
+}
+
 }  // namespace tehl::internal

@@ -27,6 +27,10 @@ struct FilmCase {
   ContactSolids solids;                           // thermal properties of the two bodies
 };
 
+// The lubricant at the inlet state (p = 0, T0); deta_dp = 0 when the film is not
+// piezoviscous (effects.piezoviscous = false), as the solver then takes eta(0, T).
+ViscosityValue InletViscosity(const FilmCase& film);
+
 // The lengths [numerics] x_start_b (inlet) and x_end_b (outlet) are measured in, for a contact
 // of reduced radius R, entrainment speed um and load w whose Hertz half-width is b [m].
 // Elastic solids: b for both. Rigid solids (effects.elastic = false) form no Hertz zone; their

@@ -108,6 +108,15 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
                    "width of the outlet pressure spike at half its prominence, in grid cells "
                    "(-1: no spike); below 20 the step's p_max is not grid-converged");
   }
+  // What the truncated inlet costs the film (EstimateInletTruncation; docs/results.md).
+  if (r.p_pa.size() == r.steps.size() && r.h_m.size() == r.steps.size()) {
+    std::vector<double> deficit;
+    for (const InletTruncation& t : r.InletTruncations())
+      deficit.push_back(t.estimated ? t.film_deficit : -1.0);
+    h5.WriteVector("/cycle/inlet_deficit", deficit, "-",
+                   "estimated film deficit of the truncated inlet, 1 - h/h(unbounded inlet) "
+                   "(-1: no estimate, e.g. an isoviscous film)");
+  }
   h5.WriteStrings("/cycle/zone", zones, "segment of the path: A-B, B-D or D-E");
   h5.SetAttribute("/cycle", "length", r.length_m, "m");
   h5.SetAttribute("/cycle", "s_B", r.s_b_m, "m");

@@ -53,6 +53,31 @@ int MeshCycleResult::PitchStep() const {
   return best;
 }
 
+std::vector<InletTruncation> MeshCycleResult::InletTruncations() const {
+  std::vector<InletTruncation> out;
+  if (x_m.size() < 3) return out;
+  for (size_t k = 0; k < steps.size() && k < p_pa.size() && k < h_m.size(); ++k) {
+    const MeshCycleStep& st = steps[k];
+    InletTruncationInputs in;
+    in.x_start_m = x_m.front();
+    in.dx_m = x_m[1] - x_m[0];
+    in.reduced_radius_m = st.reduced_radius_m;
+    in.half_width_m =
+        elastic && st.load_n_per_m > 0
+            ? LineContactHertz(st.load_n_per_m, st.reduced_radius_m, e_prime_pa).half_width_m
+            : 0.0;
+    in.um_m_s = st.um_m_s;
+    in.inlet_viscosity_pa_s = inlet_viscosity_pa_s;
+    in.pressure_viscosity_per_pa = pressure_viscosity_per_pa;
+    out.push_back(EstimateInletTruncation(
+        Eigen::Map<const Eigen::VectorXd>(p_pa[k].data(),
+                                          static_cast<Eigen::Index>(p_pa[k].size())),
+        Eigen::Map<const Eigen::VectorXd>(h_m[k].data(), static_cast<Eigen::Index>(h_m[k].size())),
+        in));
+  }
+  return out;
+}
+
 std::vector<OutletSpike> MeshCycleResult::OutletSpikes() const {
   std::vector<OutletSpike> out;
   if (x_m.size() < 2) return out;
@@ -155,6 +180,12 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   LineContactSolver solver(grid, e_prime, *film.lubricant, film.effects, film.options,
                            film.surface1, film.surface2, film.solids);
   r.x_m = grid.Nodes();
+  r.e_prime_pa = e_prime;
+  r.x_start_b = film.x_start_b;
+  r.elastic = film.effects.elastic;
+  const ViscosityValue inlet = internal::InletViscosity(film);
+  r.inlet_viscosity_pa_s = inlet.eta_pa_s;
+  r.pressure_viscosity_per_pa = inlet.deta_dp / inlet.eta_pa_s;
   r.thermal = film.effects.thermal;
   r.film_nodes = film.options.film_nodes;
   const bool keep_field = r.thermal && doc.Bool("output", "temperature_field");

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "tehl/ehl/inlet_truncation.hpp"
 #include "tehl/ehl/line_contact_solver.hpp"
 #include "tehl/ehl/outlet_spike.hpp"
 
@@ -30,6 +31,7 @@ struct ContactStepRecord {
                                     //   (LineContactSolver::Friction, as /cycle/mu) [-]
   double wall_time_s = 0;           // wall time of this step's solve (substeps included) [s]
   OutletSpike outlet_spike;         // the outlet pressure spike and its width in cells
+  InletTruncation inlet;            // what the truncated inlet costs the film (estimate)
   LineContactSolver::Summary summary;
 };
 
@@ -37,6 +39,7 @@ struct ContactRunResult {
   std::vector<ContactStepRecord> steps;  // one for a steady run; steady start + steps else
   std::string profile_csv;               // x, p, h (and T_mid when thermal) of the last level
   std::string history_csv;  // NAME_steps.csv: the steady solve, then one row per time step
+  double x_start_b = 0;     // [numerics] x_start_b of the case (the inlet end of the grid) [-]
   bool converged() const;   // every step usable
 };
 

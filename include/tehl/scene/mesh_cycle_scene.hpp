@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "tehl/ehl/inlet_truncation.hpp"
 #include "tehl/ehl/line_contact_solver.hpp"
 #include "tehl/ehl/outlet_spike.hpp"
 
@@ -79,6 +80,14 @@ struct MeshCycleResult {
   int PitchStep() const;                        // index of the step nearest to C
   // The outlet pressure spike of each step's film (p_pa; FindOutletSpike), one per row.
   std::vector<OutletSpike> OutletSpikes() const;
+  // What the truncated inlet costs each step's film (EstimateInletTruncation with the step's
+  // own R, um and Hertz half-width), one per row; needs the four fields below.
+  std::vector<InletTruncation> InletTruncations() const;
+  double x_start_b = 0;                  // [numerics] x_start_b of the case [-]
+  double e_prime_pa = 0;                 // E' of the pair [Pa]
+  bool elastic = true;                   // effects.elastic of the case
+  double inlet_viscosity_pa_s = 0;       // eta(p = 0, T0) [Pa s]
+  double pressure_viscosity_per_pa = 0;  // d ln(eta)/dp there; 0 when not piezoviscous [1/Pa]
 };
 
 // Step ends s_1..s_N in (0, g], uniform within each of the segments [0, s_b], [s_b, s_d],

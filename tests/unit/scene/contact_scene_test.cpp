@@ -251,6 +251,7 @@ TEST(ContactScene, IsothermalDiscRecordsTheInletTemperatureAndRollingFriction) {
                                          "mu",
                                          "wall_time_s",
                                          "spike_cells",
+                                         "inlet_deficit",
                                          "newton_iterations",
                                          "coupling_iterations",
                                          "termination"};

@@ -1,0 +1,121 @@
+// EstimateInletTruncation: the missing inlet pressure against closed forms and an independent
+// quadrature, and Grubin's deficit built from it.
+#include "tehl/ehl/inlet_truncation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace tehl {
+namespace {
+
+constexpr double kEta = 0.1;     // inlet viscosity [Pa s]
+constexpr double kUm = 2.0;      // entrainment speed [m/s]
+constexpr double kR = 0.01;      // reduced radius [m]
+constexpr double kAlpha = 2e-8;  // pressure-viscosity coefficient [1/Pa]
+constexpr double kDx = 1e-6;     // node spacing [m]
+
+// A film whose first three nodes carry p = 0, g dx, 2 g dx (so dp/dx = g at x0 exactly) and
+// h0 at x0 (the rest is not read).
+struct Film {
+  Eigen::VectorXd p, h;
+  Film(double h0, double g) : p(8), h(8) {
+    for (int i = 0; i < 8; ++i) {
+      p[i] = g * kDx * i;
+      h[i] = h0;
+    }
+  }
+};
+
+InletTruncationInputs Inputs(double x0, double b) {
+  InletTruncationInputs in;
+  in.x_start_m = x0;
+  in.dx_m = kDx;
+  in.reduced_radius_m = kR;
+  in.half_width_m = b;
+  in.um_m_s = kUm;
+  in.inlet_viscosity_pa_s = kEta;
+  in.pressure_viscosity_per_pa = kAlpha;
+  return in;
+}
+
+// Rigid far field h = (x^2 + c^2)/2R: int_{-inf}^{x0} dx/(x^2+c^2)^2 and ^3 in closed form
+// (the antiderivatives of the standard tables, arctan -> -pi/2 at -inf).
+double I2(double x, double c) {
+  return x / (2 * c * c * (x * x + c * c)) + (std::atan(x / c) + M_PI / 2) / (2 * c * c * c);
+}
+double I3(double x, double c) {
+  const double s = x * x + c * c;
+  return x / (4 * c * c * s * s) + 3 * x / (8 * std::pow(c, 4) * s) +
+         3 * (std::atan(x / c) + M_PI / 2) / (8 * std::pow(c, 5));
+}
+
+TEST(InletTruncation, RigidFarFieldMatchesTheClosedForm) {
+  const double x0 = -5e-4, h0 = 20e-6, g = 5e9;
+  const Film f(h0, g);
+  const InletTruncation t = EstimateInletTruncation(f.p, f.h, Inputs(x0, 0.0));
+  ASSERT_TRUE(t.estimated);
+  const double h_star = h0 - h0 * h0 * h0 / (12 * kEta * kUm) * g;
+  const double c = std::sqrt(2 * kR * h0 - x0 * x0);
+  // p_in = 12 eta um [(2R)^2 I2 - h* (2R)^3 I3]
+  const double expected =
+      12 * kEta * kUm *
+      (std::pow(2 * kR, 2) * I2(x0, c) - h_star * std::pow(2 * kR, 3) * I3(x0, c));
+  EXPECT_NEAR(t.missing_pressure_pa, expected, 1e-8 * expected);
+  EXPECT_NEAR(t.film_deficit, 1 - std::exp(-kGrubinExponent * kAlpha * expected), 1e-12);
+}
+
+// Hertz far field: an independent quadrature in u = ln(-x) (Simpson, 20000 intervals over
+// 12 e-foldings; the integrand falls like e^-3u).
+TEST(InletTruncation, HertzFarFieldMatchesAnIndependentQuadrature) {
+  const double b = 1e-4, x0 = -4.5 * b, h0 = 8e-6, g = 2e10;
+  const Film f(h0, g);
+  const InletTruncation t = EstimateInletTruncation(f.p, f.h, Inputs(x0, b));
+  ASSERT_TRUE(t.estimated);
+  auto sep = [&](double x) {  // dry Hertz separation, |x| > b
+    const double a = std::abs(x) / b, s = std::sqrt(a * a - 1);
+    return b * b / (2 * kR) * (a * s - std::log(a + s));
+  };
+  const double h_star = h0 - h0 * h0 * h0 / (12 * kEta * kUm) * g;
+  const double u0 = std::log(-x0), u1 = u0 + 12.0;
+  const int m = 20000;
+  double sum = 0;
+  for (int k = 0; k <= m; ++k) {
+    const double u = u0 + (u1 - u0) * k / m, x = -std::exp(u);
+    const double h = h0 + sep(x) - sep(x0);
+    const double f_u = 12 * kEta * kUm * (h - h_star) / (h * h * h) * std::exp(u);
+    sum += (k == 0 || k == m ? 1 : (k % 2 ? 4 : 2)) * f_u;
+  }
+  const double expected = sum * (u1 - u0) / (3.0 * m);
+  EXPECT_NEAR(t.missing_pressure_pa, expected, 1e-7 * expected);
+  // The Hertz gap is narrower than the rigid parabola upstream: more pressure is missing.
+  const InletTruncation rigid = EstimateInletTruncation(f.p, f.h, Inputs(x0, 0.0));
+  EXPECT_GT(t.missing_pressure_pa, rigid.missing_pressure_pa);
+}
+
+// p_in ~ |x0|^-3 far upstream (h ~ x^2/2R >> h*): InletFor inverts it.
+TEST(InletTruncation, InletForScalesWithTheCubeRoot) {
+  InletTruncation t;
+  t.estimated = true;
+  t.film_deficit = 0.027;
+  EXPECT_NEAR(t.InletFor(-4.5, 0.001), -4.5 * 3.0, 1e-12);
+  t.estimated = false;
+  EXPECT_EQ(t.InletFor(-4.5, 0.001), -4.5);
+}
+
+TEST(InletTruncation, NoEstimateWhereTheArgumentDoesNotHold) {
+  const Film f(10e-6, 1e9);
+  InletTruncationInputs in = Inputs(-4.5e-4, 1e-4);
+  in.pressure_viscosity_per_pa = 0;  // isoviscous: the film is not set by 1/alpha
+  EXPECT_FALSE(EstimateInletTruncation(f.p, f.h, in).estimated);
+  in = Inputs(-0.5e-4, 1e-4);  // x0 inside the Hertz zone
+  EXPECT_FALSE(EstimateInletTruncation(f.p, f.h, in).estimated);
+  in = Inputs(-4.5e-4, 1e-4);
+  in.um_m_s = -1;  // entrainment toward -x: x0 is the outlet
+  EXPECT_FALSE(EstimateInletTruncation(f.p, f.h, in).estimated);
+  Film bad(std::nan(""), 1e9);
+  EXPECT_FALSE(EstimateInletTruncation(bad.p, bad.h, Inputs(-4.5e-4, 1e-4)).estimated);
+}
+
+}  // namespace
+}  // namespace tehl
