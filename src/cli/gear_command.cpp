@@ -172,6 +172,14 @@ void Stiffness(std::ostream& o, const internal::GearCase& c) {
   o << "  load sharing: " << ToString(c.load_sharing)
     << (c.load_sharing == LoadSharing::kStiffness ? " (" + c.mesh_stiffness + ")" : std::string())
     << "\n";
+  const TipRelief& r = c.tip_relief;
+  if (r.Active()) {
+    o << "  tip relief (" << ToString(r.shape)
+      << "): pinion C_a = " << Fmt("%.2f", r.pinion_amount_m * 1e6) << " um over "
+      << Fmt("%.3f", r.pinion_length_m * 1e3)
+      << " mm before E, wheel C_a = " << Fmt("%.2f", r.wheel_amount_m * 1e6) << " um over "
+      << Fmt("%.3f", r.wheel_length_m * 1e3) << " mm after A\n";
+  }
 }
 
 void WriteCsv(const std::string& file, const internal::GearCase& c, int points) {

@@ -23,6 +23,9 @@ std::vector<MeshCycleRow> MeshCycle(const PathOfContact& path,
   if (options.load_sharing == LoadSharing::kStiffness && !stiffness)
     problems.Add({"", 0, "gear.load_sharing", "\"stiffness\"",
                   "stiffness load sharing needs a mesh stiffness model", "\"linear\""});
+  if (options.relief.Active() && options.load_sharing != LoadSharing::kStiffness)
+    problems.Add({"", 0, "gear.load_sharing", ToString(options.load_sharing),
+                  "tip relief needs the stiffness load sharing", "\"stiffness\""});
   problems.ThrowIfAny();
 
   const double g = path.length_m();
@@ -47,11 +50,13 @@ std::vector<MeshCycleRow> MeshCycle(const PathOfContact& path,
       r.pair_stiffness_n_per_m = stiffness(r.contact.r1_m, r.contact.r2_m);
       r.mesh_stiffness_n_per_m = MeshStiffnessAt(path, q, stiffness);
     }
-    r.share =
-        options.load_sharing == LoadSharing::kLinear
-            ? LinearLoadShare(path, q)
-            : (r.mesh_stiffness_n_per_m > 0 ? r.pair_stiffness_n_per_m / r.mesh_stiffness_n_per_m
-                                            : 0.0);
+    if (options.load_sharing == LoadSharing::kLinear)
+      r.share = LinearLoadShare(path, q);
+    else if (options.relief.Active())
+      r.share = RelievedLoadShare(path, q, stiffness, options.relief, load.normal_force_n).share;
+    else
+      r.share =
+          r.mesh_stiffness_n_per_m > 0 ? r.pair_stiffness_n_per_m / r.mesh_stiffness_n_per_m : 0.0;
     r.load_n_per_m = r.share * load.load_per_width_n_per_m;
     rows.push_back(r);
   }

@@ -14,6 +14,7 @@ list(APPEND TEHL_SOURCES
   src/gear/path_of_contact.cpp
   src/gear/operating_point.cpp
   src/gear/load_sharing.cpp
+  src/gear/tip_relief.cpp
   src/gear/mesh_cycle.cpp
   src/gear/tooth_profile.cpp
   src/gear/tooth_blank.cpp

@@ -8,38 +8,59 @@ namespace {
 using namespace internal;
 
 SectionSpec GearSection() {
-  return {"gear", "the spur gear pair (omit for a plain [contact] case)", false, {
-    Required(Positive("module_m", "m", "", "module m (transverse for spur gears)"), "0.002"),
-    Required(Positive("face_width_m", "m", "", "face width b"), "0.025"),
-    Real("pressure_angle_deg", "deg", "20.0", "standard pressure angle (drive flank)", 5.0, 45.0),
-    Real("coast_pressure_angle_deg", "deg", "", "coast-flank pressure angle; absent = symmetric",
-         5.0, 45.0),
-    Real("helix_angle_deg", "deg", "0.0",
-         "helix angle, for contact ratios only (the film model is spur)", 0.0, 45.0, true, false),
-    Positive("center_distance_m", "m", "", "working centre distance; absent = from the shifts"),
-    Flag("internal", "false", "true for an internal pair (the wheel is a ring gear)"),
-    Real("addendum_coefficient", "-", "1.0", "basic rack addendum h_aP / m", 0.5, 1.5),
-    Real("dedendum_coefficient", "-", "1.25", "basic rack dedendum h_fP / m", 0.8, 1.8),
-    Real("root_fillet_coefficient", "-", "0.38", "basic rack root radius rho_fP / m", 0.0, 0.6),
-    Flag("allow_undercut", "false", "accept undercut teeth instead of rejecting them"),
-    Text("mesh_stiffness", "\"potential_energy\"", "mesh stiffness method",
-         {"potential_energy", "kuang_yang", "iso"}),
-    Text("load_sharing", "\"stiffness\"", "how the load is split between tooth pairs",
-         {"stiffness", "linear"}),
-  }};
+  return {
+      "gear",
+      "the spur gear pair (omit for a plain [contact] case)",
+      false,
+      {
+          Required(Positive("module_m", "m", "", "module m (transverse for spur gears)"), "0.002"),
+          Required(Positive("face_width_m", "m", "", "face width b"), "0.025"),
+          Real("pressure_angle_deg", "deg", "20.0", "standard pressure angle (drive flank)", 5.0,
+               45.0),
+          Real("coast_pressure_angle_deg", "deg", "",
+               "coast-flank pressure angle; absent = symmetric", 5.0, 45.0),
+          Real("helix_angle_deg", "deg", "0.0",
+               "helix angle, for contact ratios only (the film model is spur)", 0.0, 45.0, true,
+               false),
+          Positive("center_distance_m", "m", "",
+                   "working centre distance; absent = from the shifts"),
+          Flag("internal", "false", "true for an internal pair (the wheel is a ring gear)"),
+          Real("addendum_coefficient", "-", "1.0", "basic rack addendum h_aP / m", 0.5, 1.5),
+          Real("dedendum_coefficient", "-", "1.25", "basic rack dedendum h_fP / m", 0.8, 1.8),
+          Real("root_fillet_coefficient", "-", "0.38", "basic rack root radius rho_fP / m", 0.0,
+               0.6),
+          Flag("allow_undercut", "false", "accept undercut teeth instead of rejecting them"),
+          Text("mesh_stiffness", "\"potential_energy\"", "mesh stiffness method",
+               {"potential_energy", "kuang_yang", "iso"}),
+          Text("load_sharing", "\"stiffness\"", "how the load is split between tooth pairs",
+               {"stiffness", "linear"}),
+          Text("tip_relief_shape", "\"linear\"",
+               "shape of the tip reliefs of [gear.pinion] and "
+               "[gear.wheel] along the line of action (ISO 21771)",
+               {"linear", "parabolic"}),
+      }};
 }
 
 SectionSpec GearMember(const std::string& name, const std::string& what, const char* z) {
-  return {"gear." + name, what, false, {
-    Required(Integer("teeth", "-", "", "number of teeth", 3.0, 10000.0), z),
-    Real("profile_shift", "-", "0.0", "profile shift coefficient x", -1.5, 1.5),
-    Positive("tip_radius_m", "m", "", "tip radius; absent = from module, addendum and shift"),
-    Modulus("youngs_modulus_pa", "206e9", "Young's modulus E (default: steel)"),
-    Real("poisson_ratio", "-", "0.3", "Poisson's ratio nu", 0.0, 0.5, true, false),
-    Positive("density_kg_m3", "kg/m^3", "7850.0", "density, for surface temperatures"),
-    Positive("conductivity_w_mk", "W/(m K)", "46.0", "thermal conductivity"),
-    Positive("heat_capacity_j_kgk", "J/(kg K)", "470.0", "specific heat capacity"),
-  }};
+  return {
+      "gear." + name,
+      what,
+      false,
+      {
+          Required(Integer("teeth", "-", "", "number of teeth", 3.0, 10000.0), z),
+          Real("profile_shift", "-", "0.0", "profile shift coefficient x", -1.5, 1.5),
+          Positive("tip_radius_m", "m", "", "tip radius; absent = from module, addendum and shift"),
+          Modulus("youngs_modulus_pa", "206e9", "Young's modulus E (default: steel)"),
+          Real("poisson_ratio", "-", "0.3", "Poisson's ratio nu", 0.0, 0.5, true, false),
+          Positive("density_kg_m3", "kg/m^3", "7850.0", "density, for surface temperatures"),
+          Positive("conductivity_w_mk", "W/(m K)", "46.0", "thermal conductivity"),
+          Positive("heat_capacity_j_kgk", "J/(kg K)", "470.0", "specific heat capacity"),
+          Real("tip_relief_m", "m", "0.0", "tip relief amount C_a at this gear's tip (0 = none)",
+               0.0, 1e-3),
+          Positive("tip_relief_length_m", "m", "",
+                   "length of the tip relief along the line of action, from the end of the path "
+                   "this tip touches (needed with tip_relief_m > 0)"),
+      }};
 }
 
 SectionSpec OperatingSection() {

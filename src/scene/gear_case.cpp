@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <tuple>
 
 #include "drive/motor_schema.hpp"
 #include "scene/dynamic_load.hpp"
@@ -72,6 +73,85 @@ GearPairSpec ReadSpec(const Document& doc) {
   return s;
 }
 
+TipRelief ReadTipRelief(const Document& doc) {
+  TipRelief r;
+  r.shape = ReliefShapeFromString(doc.String("gear", "tip_relief_shape")).value_or(r.shape);
+  r.pinion_amount_m = doc.Real("gear.pinion", "tip_relief_m");
+  r.wheel_amount_m = doc.Real("gear.wheel", "tip_relief_m");
+  if (doc.Given("gear.pinion", "tip_relief_length_m"))
+    r.pinion_length_m = doc.Real("gear.pinion", "tip_relief_length_m");
+  if (doc.Given("gear.wheel", "tip_relief_length_m"))
+    r.wheel_length_m = doc.Real("gear.wheel", "tip_relief_length_m");
+  return r;
+}
+
+// The relief's own rules: a length with every amount, within the path, stiffness load sharing
+// and no torsional dynamics. Returns false when a rule is broken.
+bool CheckTipReliefKeys(Document& doc, const GearCase& c, double g) {
+  bool ok = true;
+  const TipRelief& r = c.tip_relief;
+  char allowed[160];
+  for (const auto& [member, amount, length] :
+       {std::tuple{"gear.pinion", r.pinion_amount_m, r.pinion_length_m},
+        std::tuple{"gear.wheel", r.wheel_amount_m, r.wheel_length_m}}) {
+    if (amount > 0 && !doc.Given(member, "tip_relief_length_m")) {
+      std::snprintf(allowed, sizeof allowed, "tip_relief_length_m in (0, %.4g] [m] (g_alpha)", g);
+      doc.Problem(member, "tip_relief_length_m", "a tip relief needs its length", allowed);
+      ok = false;
+    } else if (amount > 0 && length > g) {
+      std::snprintf(allowed, sizeof allowed, "tip_relief_length_m <= %.4g [m]", g);
+      doc.Problem(member, "tip_relief_length_m",
+                  "the relief is longer than the path of contact A..E", allowed);
+      ok = false;
+    }
+  }
+  if (!r.Active()) return ok;
+  if (c.load_sharing != LoadSharing::kStiffness) {
+    doc.Problem("gear", "load_sharing", "tip relief shares the load by the pair stiffnesses",
+                "load_sharing = \"stiffness\"");
+    ok = false;
+  }
+  if (doc.Bool("effects", "dynamic_load")) {
+    doc.Problem("effects", "dynamic_load",
+                "the torsional model has no tip relief: its mesh force would ignore it",
+                "dynamic_load = false, or no tip_relief_m");
+    ok = false;
+  }
+  return ok;
+}
+
+// The tracked pair must carry load along the whole path, or the film has no load to solve
+// for: a relief that lifts it off near A or E is reported with the largest amount that
+// keeps it loaded there at this load.
+void CheckTipReliefLoads(Document& doc, const GearCase& c) {
+  const PathOfContact path(*c.pair, c.operating.pinion_speed_rad_s);
+  const double force = NominalToothLoad(*c.pair, c.operating).normal_force_n;
+  const double g = path.length_m();
+  const int samples = 400;
+  bool reported[2] = {false, false};  // near A (the wheel's tip), near E (the pinion's)
+  for (int i = 0; i <= samples; ++i) {
+    const double s = g * i / samples;
+    const int end_index = s < 0.5 * g ? 0 : 1;
+    if (reported[end_index]) continue;
+    if (RelievedLoadShare(path, s, c.pair_stiffness, c.tip_relief, force).share > 0) continue;
+    reported[end_index] = true;
+    const bool wheel_end = end_index == 0;
+    const double end = wheel_end ? 0.0 : g;
+    const double limit = ApproachWithoutPair(path, end, c.pair_stiffness, c.tip_relief, force);
+    const double own = wheel_end ? c.tip_relief.wheel_amount_m : c.tip_relief.pinion_amount_m;
+    const double gap_other = c.tip_relief.GapAt(end, g) - own;
+    char rule[256], allowed[160];
+    std::snprintf(rule, sizeof rule,
+                  "the relief lifts the tracked pair off at s = %.4g mm (%s): the other pairs "
+                  "close only %.3g um under F_bt = %.4g N, so the film there has no load",
+                  s * 1e3, wheel_end ? "near A" : "near E", limit * 1e6, force);
+    std::snprintf(allowed, sizeof allowed,
+                  "tip_relief_m < %.3g [m] at this load (or a shorter tip_relief_length_m)",
+                  limit - gap_other);
+    doc.Problem(wheel_end ? "gear.wheel" : "gear.pinion", "tip_relief_m", rule, allowed);
+  }
+}
+
 }  // namespace
 
 double GearCase::ReducedModulusPa() const {
@@ -115,6 +195,7 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
   c.mesh_stiffness = doc.String("gear", "mesh_stiffness");
   c.load_sharing =
       LoadSharingFromString(doc.String("gear", "load_sharing")).value_or(LoadSharing::kStiffness);
+  c.tip_relief = ReadTipRelief(doc);
   const double w1 = doc.Given("operating", "pinion_speed_rpm")
                         ? RpmToRadPerS(doc.Real("operating", "pinion_speed_rpm"))
                         : doc.Real("operating", "pinion_speed_rad_s");
@@ -189,6 +270,8 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
   } catch (const InputError& e) {
     AddProblems(doc, e);
   }
+  if (!CheckTipReliefKeys(doc, c, path.length_m())) return c;
+  if (c.tip_relief.Active() && c.pair_stiffness) CheckTipReliefLoads(doc, c);
   if (doc.Bool("effects", "dynamic_load")) {
     c.dynamic_load = MakeDynamicLoad(doc, c);
     if (c.dynamic_load && !c.dynamic_load->response().periodic)
@@ -205,6 +288,7 @@ std::vector<MeshCycleRow> GearCaseCycle(const GearCase& c, int points) {
   MeshCycleOptions o;
   o.points = points;
   o.load_sharing = c.load_sharing;
+  o.relief = c.tip_relief;
   std::vector<MeshCycleRow> rows =
       MeshCycle(path, NominalToothLoad(*c.pair, c.operating), o, c.pair_stiffness);
   if (c.dynamic_load)

@@ -18,6 +18,7 @@
 #include "tehl/gear/mesh_cycle.hpp"
 #include "tehl/gear/mesh_stiffness.hpp"
 #include "tehl/gear/operating_point.hpp"
+#include "tehl/gear/tip_relief.hpp"
 
 namespace tehl::internal {
 
@@ -29,6 +30,7 @@ struct GearCase {
   OperatingPoint operating;      // pinion speed and torque
   double power_w = 0;            // P = T1 w1 [W]
   LoadSharing load_sharing = LoadSharing::kStiffness;
+  TipRelief tip_relief;        // [gear.pinion] / [gear.wheel] tip_relief_m, _length_m
   std::string mesh_stiffness;  // "potential_energy" | "kuang_yang" | "iso"
   // The pair stiffness of mesh_stiffness; for "iso" a constant c' b (ISO 6336-1 method B
   // gives no variation along the path). Empty when the method could not be built.

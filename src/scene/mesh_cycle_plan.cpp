@@ -7,6 +7,7 @@
 #include "scene/dynamic_load.hpp"
 #include "tehl/gear/load_sharing.hpp"
 #include "tehl/gear/operating_point.hpp"
+#include "tehl/gear/tip_relief.hpp"
 #include "tehl/scene/mesh_cycle_scene.hpp"
 #include "tehl/units.hpp"
 
@@ -15,7 +16,8 @@ namespace tehl::internal {
 CyclePath::CyclePath(const GearCase& c)
     : gear_(c),
       path_(*c.pair, c.operating.pinion_speed_rad_s),
-      w_nominal_(NominalToothLoad(*c.pair, c.operating).load_per_width_n_per_m) {}
+      w_nominal_(NominalToothLoad(*c.pair, c.operating).load_per_width_n_per_m),
+      normal_force_n_(NominalToothLoad(*c.pair, c.operating).normal_force_n) {}
 
 PathState CyclePath::At(double s, bool left) const {
   const double nudge = 1e-9 * path_.length_m();
@@ -27,9 +29,14 @@ PathState CyclePath::At(double s, bool left) const {
   PathState st;
   st.contact = path_.At(s);
   st.contact.pairs_in_contact = path_.At(q).pairs_in_contact;
-  const double share = gear_.load_sharing == LoadSharing::kLinear
-                           ? LinearLoadShare(path_, q)
-                           : StiffnessLoadShare(path_, q, gear_.pair_stiffness);
+  double share = 0;
+  if (gear_.load_sharing == LoadSharing::kLinear)
+    share = LinearLoadShare(path_, q);
+  else if (gear_.tip_relief.Active())
+    share =
+        RelievedLoadShare(path_, q, gear_.pair_stiffness, gear_.tip_relief, normal_force_n_).share;
+  else
+    share = StiffnessLoadShare(path_, q, gear_.pair_stiffness);
   st.static_load_n_per_m = share * w_nominal_;
   // [effects] dynamic_load: the tracked pair's load of the periodic torsional response.
   st.load_n_per_m = st.static_load_n_per_m *

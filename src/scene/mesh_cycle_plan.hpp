@@ -31,7 +31,8 @@ class CyclePath {
  private:
   const GearCase& gear_;
   PathOfContact path_;
-  double w_nominal_;
+  double w_nominal_;       // F_bt / b [N/m]
+  double normal_force_n_;  // F_bt [N]
 };
 
 // The ends of the segments A-B, B-D, D-E (only those inside the path), ascending [m].

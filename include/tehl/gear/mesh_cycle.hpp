@@ -9,12 +9,14 @@
 #include "tehl/gear/load_sharing.hpp"
 #include "tehl/gear/operating_point.hpp"
 #include "tehl/gear/path_of_contact.hpp"
+#include "tehl/gear/tip_relief.hpp"
 
 namespace tehl {
 
 struct MeshCycleOptions {
   int points = 201;                                 // samples from A to E inclusive [-], >= 2
   LoadSharing load_sharing = LoadSharing::kLinear;  // kStiffness needs a PairStiffnessFn
+  TipRelief relief;  // tip relief (tip_relief.hpp); needs kStiffness when Active()
   std::vector<std::string> Validate() const;        // every violated rule; empty = valid
 };
 

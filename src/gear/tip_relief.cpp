@@ -1,0 +1,113 @@
+#include "tehl/gear/tip_relief.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace tehl {
+namespace {
+
+double Shape(ReliefShape shape, double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return shape == ReliefShape::kParabolic ? x * x : x;
+}
+
+struct Pair {
+  double s, k, gap;
+};
+
+// The common approach delta with sum_j k_j max(0, delta - e_j) = F: start from every pair
+// loaded and drop the pairs whose gap the approach does not close; each drop lowers delta,
+// so a dropped pair never comes back and the loop ends after at most one pass per pair.
+double Approach(const std::vector<Pair>& pairs, double force) {
+  std::vector<bool> active(pairs.size(), true);
+  double delta = std::numeric_limits<double>::infinity();
+  for (size_t pass = 0; pass <= pairs.size(); ++pass) {
+    double ksum = 0, kgap = 0;
+    for (size_t j = 0; j < pairs.size(); ++j)
+      if (active[j]) {
+        ksum += pairs[j].k;
+        kgap += pairs[j].k * pairs[j].gap;
+      }
+    if (!(ksum > 0)) return std::numeric_limits<double>::infinity();
+    delta = (force + kgap) / ksum;
+    bool dropped = false;
+    for (size_t j = 0; j < pairs.size(); ++j)
+      if (active[j] && pairs[j].gap >= delta) {
+        active[j] = false;
+        dropped = true;
+      }
+    if (!dropped) break;
+  }
+  return delta;
+}
+
+// The pairs in contact when the tracked pair is at s, s itself among them.
+std::vector<Pair> PairsAt(const PathOfContact& path,
+                          double s,
+                          const PairStiffnessFn& k,
+                          const TipRelief& relief) {
+  std::vector<Pair> pairs;
+  bool found = false;
+  for (double q : path.SimultaneousContacts(s)) {
+    const ContactPoint c = path.At(q);
+    pairs.push_back({q, k(c.r1_m, c.r2_m), relief.GapAt(q, path.length_m())});
+    if (q == s) found = true;
+  }
+  if (!found) {  // s off the path (beyond the round-off guard of A and E)
+    const ContactPoint c = path.At(s);
+    pairs.push_back({s, k(c.r1_m, c.r2_m), relief.GapAt(s, path.length_m())});
+  }
+  return pairs;
+}
+
+}  // namespace
+
+std::string ToString(ReliefShape shape) {
+  return shape == ReliefShape::kParabolic ? "parabolic" : "linear";
+}
+
+std::optional<ReliefShape> ReliefShapeFromString(const std::string& name) {
+  if (name == "linear") return ReliefShape::kLinear;
+  if (name == "parabolic") return ReliefShape::kParabolic;
+  return std::nullopt;
+}
+
+double TipRelief::GapAt(double s, double g) const {
+  double e = 0;
+  if (wheel_amount_m > 0 && wheel_length_m > 0 && s < wheel_length_m)
+    e += wheel_amount_m * Shape(shape, (wheel_length_m - s) / wheel_length_m);
+  if (pinion_amount_m > 0 && pinion_length_m > 0 && s > g - pinion_length_m)
+    e += pinion_amount_m * Shape(shape, (s - (g - pinion_length_m)) / pinion_length_m);
+  return e;
+}
+
+RelievedShare RelievedLoadShare(const PathOfContact& path,
+                                double s,
+                                const PairStiffnessFn& k,
+                                const TipRelief& relief,
+                                double force) {
+  const std::vector<Pair> pairs = PairsAt(path, s, k, relief);
+  RelievedShare out;
+  out.approach_m = Approach(pairs, force);
+  for (const Pair& p : pairs)
+    if (p.s == s) {
+      out.share = std::max(0.0, p.k * (out.approach_m - p.gap)) / force;
+      break;
+    }
+  return out;
+}
+
+double ApproachWithoutPair(const PathOfContact& path,
+                           double s,
+                           const PairStiffnessFn& k,
+                           const TipRelief& relief,
+                           double force) {
+  std::vector<Pair> pairs = PairsAt(path, s, k, relief);
+  pairs.erase(std::remove_if(pairs.begin(), pairs.end(), [s](const Pair& p) { return p.s == s; }),
+              pairs.end());
+  return pairs.empty() ? std::numeric_limits<double>::infinity() : Approach(pairs, force);
+}
+
+}  // namespace tehl
