@@ -179,6 +179,10 @@ void Stiffness(std::ostream& o, const internal::GearCase& c) {
       << Fmt("%.3f", r.pinion_length_m * 1e3)
       << " mm before E, wheel C_a = " << Fmt("%.2f", r.wheel_amount_m * 1e6) << " um over "
       << Fmt("%.3f", r.wheel_length_m * 1e3) << " mm after A\n";
+    o << "  loaded part of the path (share >= 1 %): " << Fmt("%.3f", c.loaded_path.begin_m * 1e3)
+      << " .. " << Fmt("%.3f", c.loaded_path.end_m * 1e3) << " mm; the pair stays loaded to A"
+      << " below a wheel relief of " << Fmt("%.2f", c.relief_limit_a_m * 1e6)
+      << " um, to E below a pinion relief of " << Fmt("%.2f", c.relief_limit_e_m * 1e6) << " um\n";
   }
 }
 

@@ -118,6 +118,11 @@ int RunGear(const RunArgs& a) {
   while (ok < r.steps.size() && r.steps[ok].summary.usable()) ++ok;
   std::printf("mesh cycle A..E: %zu of %d steps (%s), grid %zu nodes, %.1f s\n", r.steps.size() - 1,
               r.planned_steps, r.step_rule.c_str(), r.x_m.size(), r.wall_time_s);
+  if (r.begin_m > 0 || r.end_m < r.length_m)
+    std::printf(
+        "tip relief: the tracked pair carries under 1 %% of F_bt before s = %.4g mm and "
+        "after %.4g mm (A..E = 0..%.4g mm); the films are solved in between\n",
+        r.begin_m * 1e3, r.end_m * 1e3, r.length_m * 1e3);
   const size_t pitch_step = static_cast<size_t>(r.PitchStep());
   if (pitch_step < ok && (ok == r.steps.size() || r.steps[ok - 1].s_m >= r.s_c_m)) {
     const MeshCycleStep& pitch = r.steps[pitch_step];

@@ -110,4 +110,38 @@ double ApproachWithoutPair(const PathOfContact& path,
   return pairs.empty() ? std::numeric_limits<double>::infinity() : Approach(pairs, force);
 }
 
+LoadedPath LoadedPathOf(const PathOfContact& path,
+                        const PairStiffnessFn& k,
+                        const TipRelief& relief,
+                        double force,
+                        double min_share) {
+  const double g = path.length_m();
+  if (!relief.Active()) return {0.0, g};
+  auto loaded = [&](double s) {
+    return RelievedLoadShare(path, s, k, relief, force).share >= min_share;
+  };
+  const int n = 400;
+  std::vector<bool> on(n + 1);
+  for (int i = 0; i <= n; ++i) on[i] = loaded(g * i / n);
+  int first = 0, last = n;
+  while (first <= n && !on[first]) ++first;
+  while (last >= 0 && !on[last]) --last;
+  if (first > last) return {g, 0.0};
+  for (int i = first; i <= last; ++i)
+    if (!on[i]) return {g, 0.0};  // lifted off between the ends
+  // The share rises through min_share between samples first - 1 and first (and falls between
+  // last and last + 1); bisect on the one-sided loaded test.
+  auto bisect = [&](double off, double on_s) {
+    for (int it = 0; it < 60 && std::abs(on_s - off) > 1e-9 * g; ++it) {
+      const double mid = 0.5 * (off + on_s);
+      (loaded(mid) ? on_s : off) = mid;
+    }
+    return on_s;
+  };
+  LoadedPath out;
+  out.begin_m = first == 0 ? 0.0 : bisect(g * (first - 1) / n, g * first / n);
+  out.end_m = last == n ? g : bisect(g * (last + 1) / n, g * last / n);
+  return out;
+}
+
 }  // namespace tehl

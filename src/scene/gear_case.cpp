@@ -73,6 +73,12 @@ GearPairSpec ReadSpec(const Document& doc) {
   return s;
 }
 
+std::string Fmt3(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", v);
+  return b;
+}
+
 TipRelief ReadTipRelief(const Document& doc) {
   TipRelief r;
   r.shape = ReliefShapeFromString(doc.String("gear", "tip_relief_shape")).value_or(r.shape);
@@ -120,36 +126,32 @@ bool CheckTipReliefKeys(Document& doc, const GearCase& c, double g) {
   return ok;
 }
 
-// The tracked pair must carry load along the whole path, or the film has no load to solve
-// for: a relief that lifts it off near A or E is reported with the largest amount that
-// keeps it loaded there at this load.
-void CheckTipReliefLoads(Document& doc, const GearCase& c) {
+// Where the tracked pair carries at least kMinFilmShare of F_bt: the films of the mesh cycle
+// are solved there. A relief that leaves no such part, or lifts the pair off between its
+// ends, is reported at the relief's key.
+void FindLoadedPath(Document& doc, GearCase& c) {
   const PathOfContact path(*c.pair, c.operating.pinion_speed_rad_s);
   const double force = NominalToothLoad(*c.pair, c.operating).normal_force_n;
   const double g = path.length_m();
-  const int samples = 400;
-  bool reported[2] = {false, false};  // near A (the wheel's tip), near E (the pinion's)
-  for (int i = 0; i <= samples; ++i) {
-    const double s = g * i / samples;
-    const int end_index = s < 0.5 * g ? 0 : 1;
-    if (reported[end_index]) continue;
-    if (RelievedLoadShare(path, s, c.pair_stiffness, c.tip_relief, force).share > 0) continue;
-    reported[end_index] = true;
-    const bool wheel_end = end_index == 0;
-    const double end = wheel_end ? 0.0 : g;
-    const double limit = ApproachWithoutPair(path, end, c.pair_stiffness, c.tip_relief, force);
-    const double own = wheel_end ? c.tip_relief.wheel_amount_m : c.tip_relief.pinion_amount_m;
-    const double gap_other = c.tip_relief.GapAt(end, g) - own;
-    char rule[256], allowed[160];
-    std::snprintf(rule, sizeof rule,
-                  "the relief lifts the tracked pair off at s = %.4g mm (%s): the other pairs "
-                  "close only %.3g um under F_bt = %.4g N, so the film there has no load",
-                  s * 1e3, wheel_end ? "near A" : "near E", limit * 1e6, force);
-    std::snprintf(allowed, sizeof allowed,
-                  "tip_relief_m < %.3g [m] at this load (or a shorter tip_relief_length_m)",
-                  limit - gap_other);
-    doc.Problem(wheel_end ? "gear.wheel" : "gear.pinion", "tip_relief_m", rule, allowed);
-  }
+  c.loaded_path = LoadedPathOf(path, c.pair_stiffness, c.tip_relief, force, kMinFilmShare);
+  // The largest amounts that keep the pair loaded to A and to E at this load.
+  c.relief_limit_a_m = ApproachWithoutPair(path, 0.0, c.pair_stiffness, c.tip_relief, force) -
+                       (c.tip_relief.GapAt(0.0, g) - c.tip_relief.wheel_amount_m);
+  c.relief_limit_e_m = ApproachWithoutPair(path, g, c.pair_stiffness, c.tip_relief, force) -
+                       (c.tip_relief.GapAt(g, g) - c.tip_relief.pinion_amount_m);
+  if (!c.loaded_path.empty()) return;
+  const bool wheel = c.tip_relief.wheel_amount_m >= c.tip_relief.pinion_amount_m;
+  char rule[256];
+  std::snprintf(rule, sizeof rule,
+                "with this relief the tracked pair carries less than %.0f %% of F_bt = %.4g N "
+                "along the whole path, or drops below it between A and E, so the mesh cycle "
+                "has no loaded film to follow",
+                100 * kMinFilmShare, force);
+  doc.Problem(wheel ? "gear.wheel" : "gear.pinion", "tip_relief_m", rule,
+              "a smaller tip_relief_m or a shorter tip_relief_length_m (the pair stays loaded "
+              "to A and E below " +
+                  Fmt3(c.relief_limit_a_m) + " m at the wheel and " + Fmt3(c.relief_limit_e_m) +
+                  " m at the pinion)");
 }
 
 }  // namespace
@@ -235,6 +237,7 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
   // Hertz line-contact theory needs b << R: the whole nominal tooth load at the path end with
   // the smaller R bounds b / R on the path from above.
   const PathOfContact path(pair, c.operating.pinion_speed_rad_s);
+  c.loaded_path = {0.0, path.length_m()};
   const double r_min =
       std::min(path.At(0.0).reduced_radius_m, path.At(path.length_m()).reduced_radius_m);
   const double w_nominal = NominalToothLoad(pair, c.operating).load_per_width_n_per_m;
@@ -271,7 +274,7 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
     AddProblems(doc, e);
   }
   if (!CheckTipReliefKeys(doc, c, path.length_m())) return c;
-  if (c.tip_relief.Active() && c.pair_stiffness) CheckTipReliefLoads(doc, c);
+  if (c.tip_relief.Active() && c.pair_stiffness) FindLoadedPath(doc, c);
   if (doc.Bool("effects", "dynamic_load")) {
     c.dynamic_load = MakeDynamicLoad(doc, c);
     if (c.dynamic_load && !c.dynamic_load->response().periodic)

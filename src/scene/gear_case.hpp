@@ -2,8 +2,9 @@
 // [operating] sections of a case Document turned into the gear structs and the operating
 // point, with every geometric problem (interference, undercut without allow_undercut,
 // eps_alpha < 1, pointed tip, overlapping or impossible centre distance, a stiffness method
-// outside its range, linear load sharing with eps_alpha >= 2) added to the Document at its
-// key, so the user sees file:line and what to change. Private to src/.
+// outside its range, linear load sharing with eps_alpha >= 2, a tip relief that leaves no
+// loaded film) added to the Document at its key, so the user sees file:line and what to
+// change. Private to src/.
 #pragma once
 
 #include <memory>
@@ -24,6 +25,10 @@ namespace tehl::internal {
 
 class DynamicLoad;  // scene/dynamic_load.hpp
 
+// A relief can lift the tracked pair off near A and E; its films are solved where it carries
+// at least this share of F_bt (below it the film is near-rigid and its load negligible) [-].
+inline constexpr double kMinFilmShare = 0.01;
+
 struct GearCase {
   GearPairSpec spec;
   std::optional<GearPair> pair;  // empty when the spec is unusable
@@ -31,6 +36,12 @@ struct GearCase {
   double power_w = 0;            // P = T1 w1 [W]
   LoadSharing load_sharing = LoadSharing::kStiffness;
   TipRelief tip_relief;        // [gear.pinion] / [gear.wheel] tip_relief_m, _length_m
+  // Where the tracked pair carries at least kMinFilmShare of F_bt: the films of the mesh
+  // cycle are solved from begin to end ([0, g_alpha] without relief) [m].
+  LoadedPath loaded_path;
+  // With relief: the largest wheel (pinion) amount that keeps the pair loaded to A (E) at
+  // this load, the other relief as it is [m].
+  double relief_limit_a_m = 0, relief_limit_e_m = 0;
   std::string mesh_stiffness;  // "potential_energy" | "kuang_yang" | "iso"
   // The pair stiffness of mesh_stiffness; for "iso" a constant c' b (ISO 6336-1 method B
   // gives no variation along the path). Empty when the method could not be built.

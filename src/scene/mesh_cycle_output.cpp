@@ -119,6 +119,8 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
   }
   h5.WriteStrings("/cycle/zone", zones, "segment of the path: A-B, B-D or D-E");
   h5.SetAttribute("/cycle", "length", r.length_m, "m");
+  h5.SetAttribute("/cycle", "s_begin", r.begin_m, "m");  // A' (0 = A)
+  h5.SetAttribute("/cycle", "s_end", r.end_m, "m");      // E' (length = E)
   h5.SetAttribute("/cycle", "s_B", r.s_b_m, "m");
   h5.SetAttribute("/cycle", "s_C", r.s_c_m, "m");
   h5.SetAttribute("/cycle", "s_D", r.s_d_m, "m");

@@ -16,6 +16,8 @@ namespace tehl::internal {
 CyclePath::CyclePath(const GearCase& c)
     : gear_(c),
       path_(*c.pair, c.operating.pinion_speed_rad_s),
+      begin_m_(c.loaded_path.begin_m),
+      end_m_(c.loaded_path.end_m),
       w_nominal_(NominalToothLoad(*c.pair, c.operating).load_per_width_n_per_m),
       normal_force_n_(NominalToothLoad(*c.pair, c.operating).normal_force_n) {}
 
@@ -44,12 +46,13 @@ PathState CyclePath::At(double s, bool left) const {
   return st;
 }
 
-std::vector<double> SegmentEnds(double g, double sb, double sd) {
+std::vector<double> SegmentEnds(double g, double sb, double sd, double begin, double end) {
+  if (end < 0) end = g;
   std::vector<double> ends;
   for (double sw : {sb, sd})
-    if (sw > 1e-9 * g && sw < g * (1 - 1e-9)) ends.push_back(sw);
+    if (sw > begin + 1e-9 * g && sw < end - 1e-9 * g) ends.push_back(sw);
   std::sort(ends.begin(), ends.end());
-  ends.push_back(g);
+  ends.push_back(end);
   return ends;
 }
 
@@ -58,12 +61,14 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
   MeshCyclePlan plan;
   const PathOfContact& path = cycle.path();
   const double g = path.length_m();
-  // b_max and the entrainment transits over a fine sampling of the path (both sides of B, D).
+  // The films are solved on the loaded part of the path (all of A..E without tip relief).
+  const double begin = cycle.begin_m(), end = cycle.end_m();
+  // b_max and the entrainment transits over a fine sampling of it (both sides of B, D).
   const int samples = 400;
   double transits = 0;
   GridUnits units;  // b_max, or the longest rigid inlet scale (GridUnitsFor)
   for (int i = 0; i <= samples; ++i) {
-    const double s = g * i / samples;
+    const double s = begin + (end - begin) * i / samples;
     for (bool left : {true, false}) {
       const PathState st = cycle.At(s, left);
       const double b =
@@ -71,7 +76,8 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
       plan.max_half_width_m = std::max(plan.max_half_width_m, b);
       units = units.Max(GridUnitsFor(film, b, st.contact.reduced_radius_m, st.contact.um_m_s,
                                      st.load_n_per_m));
-      if (left && i > 0) transits += st.contact.um_m_s / b * (path.duration_s() / samples);
+      if (left && i > 0)
+        transits += st.contact.um_m_s / b * (path.duration_s() * (end - begin) / g / samples);
     }
   }
   plan.grid = units.Grid(film);
@@ -83,8 +89,8 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
   std::vector<int> min_seg;
   int rough_total = 0;
   if (film.effects.roughness) {
-    double a = 0;
-    for (double e : SegmentEnds(g, path.s_b_m(), path.s_d_m())) {
+    double a = begin;
+    for (double e : SegmentEnds(g, path.s_b_m(), path.s_d_m(), begin, end)) {
       double um_seg = 0;
       for (int i = 0; i <= 50; ++i) um_seg = std::max(um_seg, path.At(a + (e - a) * i / 50).um_m_s);
       const int need = static_cast<int>(
@@ -101,7 +107,7 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
                     std::to_string(rough_total) + " steps on this grid",
                 "0 (automatic) or >= " + std::to_string(rough_total));
   }
-  plan.s_steps = MeshCycleStepPositions(g, path.s_b_m(), path.s_d_m(), steps, min_seg);
+  plan.s_steps = MeshCycleStepPositions(g, path.s_b_m(), path.s_d_m(), steps, min_seg, begin, end);
   char rule[256];
   if (user_steps > 0)
     std::snprintf(rule, sizeof rule, "[numerics] steps = %lld", user_steps);

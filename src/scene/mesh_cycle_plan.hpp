@@ -27,21 +27,28 @@ class CyclePath {
   explicit CyclePath(const GearCase& c);
   const PathOfContact& path() const { return path_; }
   PathState At(double s, bool left) const;
+  // The part of the path whose films are solved: where the tracked pair carries at least
+  // kMinFilmShare of F_bt (A..E without tip relief) [m].
+  double begin_m() const { return begin_m_; }
+  double end_m() const { return end_m_; }
 
  private:
   const GearCase& gear_;
   PathOfContact path_;
+  double begin_m_, end_m_;  // [m]
   double w_nominal_;       // F_bt / b [N/m]
   double normal_force_n_;  // F_bt [N]
 };
 
-// The ends of the segments A-B, B-D, D-E (only those inside the path), ascending [m].
-std::vector<double> SegmentEnds(double g, double sb, double sd);
+// The ends of the segments A-B, B-D, D-E within [begin, end] (only the switch points inside
+// it), ascending, the last being `end` (g when negative) [m].
+std::vector<double> SegmentEnds(
+    double g, double sb, double sd, double begin = 0.0, double end = -1.0);
 
 struct MeshCyclePlan {
   double max_half_width_m = 0;  // b_max over the path [m]
   UniformGrid grid;             // x_start_b .. x_end_b in GridUnitsFor lengths
-  std::vector<double> s_steps;  // step positions from A (0) to E (g_alpha) [m]
+  std::vector<double> s_steps;  // step positions from A' to E' (A = 0 to E = g_alpha) [m]
   std::string step_rule;        // how the step count was chosen, for the run's report
 };
 

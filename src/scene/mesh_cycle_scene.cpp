@@ -88,18 +88,24 @@ std::vector<OutletSpike> MeshCycleResult::OutletSpikes() const {
   return out;
 }
 
-std::vector<double> MeshCycleStepPositions(
-    double g, double sb, double sd, int steps, const std::vector<int>& min_per_segment) {
-  const std::vector<double> ends = SegmentEnds(g, sb, sd);
+std::vector<double> MeshCycleStepPositions(double g,
+                                           double sb,
+                                           double sd,
+                                           int steps,
+                                           const std::vector<int>& min_per_segment,
+                                           double begin,
+                                           double end) {
+  if (end < 0) end = g;
+  const std::vector<double> ends = SegmentEnds(g, sb, sd, begin, end);
   const size_t m = ends.size();
   std::vector<double> len(m);
-  for (size_t i = 0; i < m; ++i) len[i] = ends[i] - (i ? ends[i - 1] : 0.0);
+  for (size_t i = 0; i < m; ++i) len[i] = ends[i] - (i ? ends[i - 1] : begin);
   // Largest-remainder apportionment of `steps` by length, then the minimum per segment.
   std::vector<int> n(m);
   std::vector<std::pair<double, size_t>> rest;
   int used = 0;
   for (size_t i = 0; i < m; ++i) {
-    const double exact = steps * len[i] / g;
+    const double exact = steps * len[i] / (end - begin);
     n[i] = static_cast<int>(std::floor(exact));
     used += n[i];
     rest.push_back({exact - n[i], i});
@@ -110,9 +116,9 @@ std::vector<double> MeshCycleStepPositions(
     const int floor_i = i < min_per_segment.size() ? min_per_segment[i] : 1;
     n[i] = std::max({n[i], floor_i, 1});
   }
-  std::vector<double> s = {0.0};
+  std::vector<double> s = {begin};
   for (size_t i = 0; i < m; ++i) {
-    const double a = i ? ends[i - 1] : 0.0;
+    const double a = i ? ends[i - 1] : begin;
     for (int k = 1; k <= n[i]; ++k) s.push_back(k == n[i] ? ends[i] : a + len[i] * k / n[i]);
   }
   return s;
@@ -142,6 +148,8 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
 
   MeshCycleResult r;
   r.length_m = path.length_m();
+  r.begin_m = cycle.begin_m();
+  r.end_m = cycle.end_m();
   r.s_b_m = path.s_b_m();
   r.s_c_m = path.s_c_m();
   r.s_d_m = path.s_d_m();
@@ -287,10 +295,10 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   auto elapsed = [&] {
     return elapsed_before + std::chrono::duration<double>(Clock::now() - t_start).count();
   };
-  PathState st = cycle.At(first == 1 ? 0.0 : s_steps[first - 1], true);
+  PathState st = cycle.At(s_steps[first - 1], true);
   ContactConditions c = conditions(st);
-  if (first == 1) {
-    st = cycle.At(0.0, false);
+  if (first == 1) {  // the steady film where the cycle starts: A, or A' with tip relief
+    st = cycle.At(s_steps[0], false);
     c = conditions(st);
     record(st, solver.SolveSteady(c, &state));
     if (r.steps.back().summary.usable()) solver.BeginTransient(c, state);

@@ -55,5 +55,25 @@ TEST(MeshCycleTipRelief, ReliefRemovesTheSqueezeTransientAfterB) {
   EXPECT_GT(without, 2 * with) << "h_c spread over B..D without relief";
 }
 
+TEST(MeshCycleTipRelief, AReliefThatLiftsThePairOffIsSolvedOnTheLoadedPart) {
+  // 20 um on both tips exceeds the 14.1 / 14.2 um the other pairs close on their own at A and
+  // E (docs/gear.md "Tip relief"): the films run from A' to E', where the pair carries 1 % of
+  // F_bt (kMinFilmShare), and every step converges.
+  const MeshCycleResult r =
+      RunReduced("seed004_sae40_tip_relief",
+                 Reduced({{"tip_relief_m", "20e-6"}, {"steps", "40"}, {"non_newtonian", "false"}}));
+  ASSERT_TRUE(r.converged());
+  EXPECT_GT(r.begin_m, 0.0);
+  EXPECT_LT(r.begin_m, r.s_b_m);
+  EXPECT_LT(r.end_m, r.length_m);
+  EXPECT_GT(r.end_m, r.s_d_m);
+  EXPECT_EQ(r.steps.front().s_m, r.begin_m);
+  EXPECT_EQ(r.steps.back().s_m, r.end_m);
+  const double nominal = r.w0_n_per_m;  // single contact at C: the whole F_bt / b
+  EXPECT_NEAR(r.steps.front().static_load_n_per_m / nominal, 0.01, 1e-4);
+  EXPECT_NEAR(r.steps.back().static_load_n_per_m / nominal, 0.01, 1e-4);
+  for (const MeshCycleStep& st : r.steps) EXPECT_GT(st.h_min_m, 0.0);
+}
+
 }  // namespace
 }  // namespace tehl

@@ -59,4 +59,19 @@ double ApproachWithoutPair(const PathOfContact& path,
                            const TipRelief& relief,
                            double normal_force_n);
 
+// The part of the path where the tracked pair carries at least `min_share` of F_bt [m]:
+// [0, g_alpha] without relief; with relief a relief can lift the pair off near A (the wheel's
+// tip) and near E (the pinion's), and the ends are where the share reaches min_share
+// (bisection to 1e-9 g_alpha on a sampling of 400 intervals). Empty (begin >= end) when the
+// pair never carries min_share, or when it drops below it between the two ends.
+struct LoadedPath {
+  double begin_m = 0, end_m = 0;  // A' and E' [m]
+  bool empty() const { return !(end_m > begin_m); }
+};
+LoadedPath LoadedPathOf(const PathOfContact& path,
+                        const PairStiffnessFn& k,
+                        const TipRelief& relief,
+                        double normal_force_n,
+                        double min_share);
+
 }  // namespace tehl

@@ -67,6 +67,9 @@ struct MeshCycleResult {
   // per step when [output] temperature_field is true [K].
   std::vector<std::vector<double>> t_mid_k, t1_k, t2_k, t_field_k;
   double length_m = 0;                          // g_alpha, A to E [m]
+  // The loaded part A'..E' whose films are solved: [0, length_m] unless a tip relief lifts
+  // the tracked pair below 1 % of F_bt near A or E (docs/gear.md "Tip relief") [m].
+  double begin_m = 0, end_m = 0;
   double s_b_m = 0, s_c_m = 0, s_d_m = 0;       // B, pitch point C, D from A [m]
   double r0_m = 0, u0_m_s = 0, w0_n_per_m = 0;  // R, um and w at C [m], [m/s], [N/m]
   double max_half_width_m = 0;                  // b_max, sets the grid [m]
@@ -93,11 +96,15 @@ struct MeshCycleResult {
 // Step ends s_1..s_N in (0, g], uniform within each of the segments [0, s_b], [s_b, s_d],
 // [s_d, g] (switch points outside (0, g) are skipped), `steps` in all, each segment at least
 // `min_per_segment[i]` (and 1) steps; so B and D are step ends exactly. Returns s_0 = 0 first.
+// With begin_m / end_m (the loaded part A'..E' of a path with tip relief) the same on
+// [begin, end] (end < 0: g): s_0 = begin, s_N = end, the segments cut at B and D inside.
 std::vector<double> MeshCycleStepPositions(double length_m,
                                            double s_b_m,
                                            double s_d_m,
                                            int steps,
-                                           const std::vector<int>& min_per_segment = {});
+                                           const std::vector<int>& min_per_segment = {},
+                                           double begin_m = 0.0,
+                                           double end_m = -1.0);
 
 // Automatic step count: four steps per transit of the entrainment across the Hertz
 // half-width, n = ceil(4 integral um / b dt) over A..E, clamped to [100, 200] (see

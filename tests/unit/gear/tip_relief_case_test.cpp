@@ -7,6 +7,8 @@
 #include <string>
 
 #include "scene/gear_case.hpp"
+#include "tehl/gear/operating_point.hpp"
+#include "tehl/gear/path_of_contact.hpp"
 #include "tehl/scene/case_schema.hpp"
 
 namespace tehl::internal {
@@ -88,28 +90,47 @@ TEST(TipReliefCase, NeedsStiffnessSharingAndNoTorsionalDynamics) {
   EXPECT_EQ(dynamic.problems()[0].key, "effects.dynamic_load") << Problems(dynamic);
 }
 
-TEST(TipReliefCase, TheLargestReliefThatKeepsThePairLoadedIsTheAllowedOne) {
-  // Too much wheel relief lifts the pair off near A; the message gives the limit, and
-  // reliefs 2 % either side of it are accepted and rejected.
+TEST(TipReliefCase, AReliefThatLiftsThePairOffShortensTheSolvedPath) {
+  // Too much wheel relief lifts the pair off near A: the films are solved from A', where the
+  // pair's share reaches kMinFilmShare. relief_limit_a_m is the largest amount that keeps
+  // the pair loaded to A: 10 % below it the pair keeps several % of the load at A and the
+  // solved path starts there, 2 % above it the path starts after A.
   const double length = 2e-3;
   Document doc = ReadCase(ReliefCase("", "", Relief(30e-6, length)));
-  ReadGearCase(doc);
-  ASSERT_EQ(doc.problems().size(), 1u) << Problems(doc);
-  const InputProblem& p = doc.problems()[0];
-  EXPECT_EQ(p.key, "gear.wheel.tip_relief_m");
-  EXPECT_GT(p.line, 0);
-  const auto at = p.allowed.find("tip_relief_m < ");
-  ASSERT_NE(at, std::string::npos) << p.allowed;
-  const double limit = std::strtod(p.allowed.c_str() + at + 15, nullptr);
+  const auto c = ReadGearCase(doc);
+  ASSERT_TRUE(doc.problems().empty()) << Problems(doc);
+  ASSERT_TRUE(c);
+  const PathOfContact path(*c->pair, c->operating.pinion_speed_rad_s);
+  const double force = NominalToothLoad(*c->pair, c->operating).normal_force_n;
+  EXPECT_GT(c->loaded_path.begin_m, 0.0);
+  EXPECT_LT(c->loaded_path.begin_m, length);
+  EXPECT_EQ(c->loaded_path.end_m, path.length_m());  // no pinion relief
+  EXPECT_NEAR(
+      RelievedLoadShare(path, c->loaded_path.begin_m, c->pair_stiffness, c->tip_relief, force)
+          .share,
+      kMinFilmShare, 1e-6);
   // Seed 004 at 10 kW: F_bt = 2903.5 N on one pair of about 2e8 N/m closes some 15 um.
+  const double limit = c->relief_limit_a_m;
   EXPECT_GT(limit, 8e-6);
   EXPECT_LT(limit, 25e-6);
-  Document below = ReadCase(ReliefCase("", "", Relief(0.98 * limit, length)));
-  ReadGearCase(below);
-  EXPECT_TRUE(below.problems().empty()) << Problems(below);
-  Document above = ReadCase(ReliefCase("", "", Relief(1.02 * limit, length)));
-  ReadGearCase(above);
-  EXPECT_EQ(above.problems().size(), 1u) << Problems(above);
+  for (const auto& [factor, starts_at_a] : {std::pair{0.9, true}, std::pair{1.02, false}}) {
+    Document d = ReadCase(ReliefCase("", "", Relief(factor * limit, length)));
+    const auto near = ReadGearCase(d);
+    ASSERT_TRUE(d.problems().empty()) << Problems(d);
+    EXPECT_EQ(near->loaded_path.begin_m == 0.0, starts_at_a) << "factor " << factor;
+  }
+}
+
+TEST(TipReliefCase, AWheelReliefOverThePathLeavesTheSingleContactPart) {
+  // 1 mm of wheel relief over (nearly) the whole path: in A..B the partner at s + p_b always
+  // has the smaller gap and takes the whole load, so the tracked pair is loaded from B (where
+  // it is alone) to E (where the entering partner has the larger gap).
+  Document doc = ReadCase(ReliefCase("", "", Relief(1e-3, 10.4e-3)));
+  const auto c = ReadGearCase(doc);
+  ASSERT_TRUE(doc.problems().empty()) << Problems(doc);
+  const PathOfContact path(*c->pair, c->operating.pinion_speed_rad_s);
+  EXPECT_NEAR(c->loaded_path.begin_m, path.s_b_m(), 1e-8);
+  EXPECT_EQ(c->loaded_path.end_m, path.length_m());
 }
 
 }  // namespace

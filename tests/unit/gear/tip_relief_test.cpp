@@ -132,5 +132,35 @@ TEST(RelievedLoadShare, PinionReliefShrinksTheStepAtB) {
   }
 }
 
+TEST(LoadedPathOf, StartsWhereTheShareReachesTheMinimum) {
+  // Two equal pairs, the one at s in the wheel's linear relief: share 1/2 - k e / (2 F) >= m
+  // while e = C (L - s) / L <= (1 - 2 m) F / k, so the loaded path starts at
+  // s' = L (1 - (1 - 2 m) F / (k C)); no pinion relief, so it ends at E.
+  const PathOfContact path = SeedPath();
+  const PairStiffnessFn k = [](double, double) { return kPair; };
+  TipRelief r;
+  r.wheel_amount_m = 30e-6;
+  r.wheel_length_m = 0.5 * path.s_b_m();
+  const double m = 0.01;
+  const LoadedPath loaded = LoadedPathOf(path, k, r, kForce, m);
+  const double expected =
+      r.wheel_length_m * (1 - (1 - 2 * m) * kForce / (kPair * r.wheel_amount_m));
+  EXPECT_NEAR(loaded.begin_m, expected, 2e-9 * path.length_m());
+  EXPECT_EQ(loaded.end_m, path.length_m());
+  EXPECT_FALSE(loaded.empty());
+  // Without relief: the whole path. A pinion relief over the whole path leaves the pair
+  // loaded from A (the partner at s + p_b has the larger gap) to D, where single contact
+  // ends and the entering partner, free of relief, takes the load.
+  const LoadedPath whole = LoadedPathOf(path, k, TipRelief{}, kForce, m);
+  EXPECT_EQ(whole.begin_m, 0.0);
+  EXPECT_EQ(whole.end_m, path.length_m());
+  TipRelief huge;
+  huge.pinion_amount_m = 1e-3;
+  huge.pinion_length_m = path.length_m();
+  const LoadedPath single = LoadedPathOf(path, k, huge, kForce, m);
+  EXPECT_EQ(single.begin_m, 0.0);
+  EXPECT_NEAR(single.end_m, path.s_d_m(), 2e-9 * path.length_m());
+}
+
 }  // namespace
 }  // namespace tehl

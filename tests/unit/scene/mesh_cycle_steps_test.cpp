@@ -58,6 +58,28 @@ TEST(MeshCycleSteps, SwitchPointsOutsideThePathAreSkipped) {
   EXPECT_NEAR(s[1], kG / 8, 1e-18);
 }
 
+TEST(MeshCycleSteps, ALoadedPartOfThePathIsSteppedLikeTheWholePath) {
+  // Tip relief: the films are solved on A'..E' = [0.7, 9.8] mm; B and D stay step ends and
+  // the steps are shared by the lengths inside it (3.86, 1.344, 3.896 mm of 9.1 mm).
+  const double begin = 0.7e-3, end = 9.8e-3;
+  const std::vector<double> s = MeshCycleStepPositions(kG, kB, kD, 91, {}, begin, end);
+  ASSERT_EQ(s.size(), 92u);
+  EXPECT_EQ(s.front(), begin);
+  EXPECT_EQ(s.back(), end);
+  EXPECT_NE(std::find(s.begin(), s.end(), kB), s.end());
+  EXPECT_NE(std::find(s.begin(), s.end(), kD), s.end());
+  const auto count = [&](double a, double b) {
+    return std::count_if(s.begin() + 1, s.end(), [&](double q) { return q > a && q <= b; });
+  };
+  EXPECT_NEAR(count(begin, kB), 91 * 3.86 / 9.1, 1.0);
+  EXPECT_NEAR(count(kD, end), 91 * 3.896 / 9.1, 1.0);
+  // A loaded part that starts after B has no step at B.
+  const std::vector<double> late = MeshCycleStepPositions(kG, kB, kD, 20, {}, 5e-3, kG);
+  EXPECT_EQ(late.front(), 5e-3);
+  EXPECT_EQ(std::find(late.begin(), late.end(), kB), late.end());
+  EXPECT_NE(std::find(late.begin(), late.end(), kD), late.end());
+}
+
 TEST(MeshCycleSteps, AutomaticCountIsFourPerTransitClampedTo100To200) {
   EXPECT_EQ(AutomaticMeshCycleSteps(10.0), 100);
   EXPECT_EQ(AutomaticMeshCycleSteps(37.4), 150);  // ceil(149.6)
