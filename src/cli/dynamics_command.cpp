@@ -98,6 +98,16 @@ void Report(std::ostream& o,
                     .c_str(),
                 m.static_force_n(), m.natural_frequency_hz(), nr, nr / 2, nr / 3);
   o << buf;
+  const TipRelief& relief = mesh.relief();
+  if (relief.Active()) {
+    std::snprintf(buf, sizeof buf,
+                  "  tip relief (%s) on the drive flanks: pinion %.2f um over %.3f mm, wheel "
+                  "%.2f um over %.3f mm; each pair carries k (x - e), e its relief gap\n",
+                  ToString(relief.shape).c_str(), relief.pinion_amount_m * 1e6,
+                  relief.pinion_length_m * 1e3, relief.wheel_amount_m * 1e6,
+                  relief.wheel_length_m * 1e3);
+    o << buf;
+  }
   std::snprintf(buf, sizeof buf,
                 "At the case's speed %.2f rpm: mesh frequency f_mesh = %.2f Hz (f_mesh/f_n = "
                 "%.4f)\n"

@@ -190,11 +190,18 @@ std::vector<PairLoadPoint> TrackedPairLoad(const DynamicResponse& r, double b, i
   for (const auto& [s, left] : at) {
     PairLoadPoint p;
     p.s_m = s;
-    p.share = mesh.ShareAt(s, left);
     double phase = s - std::floor(s / pb) * pb;
     if (left && phase < 1e-9 * pb && s > 0) phase = pb;
-    p.static_n_per_m = r.static_force_n * p.share / b;
-    p.dynamic_n_per_m = r.ForceAt(phase, left) * p.share / b;
+    if (!mesh.relief().Active()) {
+      p.share = mesh.ShareAt(s, left);
+      p.static_n_per_m = r.static_force_n * p.share / b;
+      p.dynamic_n_per_m = r.ForceAt(phase, left) * p.share / b;
+    } else {  // the shares follow the approach: static at F_static, dynamic at x(t)
+      p.share = mesh.ShareAt(s, left, mesh.StaticApproachAt(s, left, r.static_force_n));
+      const DynamicSample d = r.SampleAt(phase, left);
+      p.static_n_per_m = r.static_force_n * p.share / b;
+      p.dynamic_n_per_m = d.force_n * mesh.ShareAt(s, left, d.x_m) / b;
+    }
     out.push_back(p);
   }
   return out;

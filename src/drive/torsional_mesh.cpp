@@ -8,7 +8,11 @@
 
 namespace tehl {
 
-TorsionalMesh::TorsionalMesh(const GearPair& pair, const PairStiffnessFn& k, int n) {
+TorsionalMesh::TorsionalMesh(const GearPair& pair,
+                             const PairStiffnessFn& k,
+                             int n,
+                             const TipRelief& relief)
+    : relief_(relief) {
   const PathOfContact path(pair, 1.0, Flank::kDrive);
   const LineOfAction& l = path.line();
   base_pitch_m_ = path.base_pitch_m();
@@ -129,7 +133,7 @@ double TorsionalMesh::PairShare(int segment, int index, double phase) const {
   return PairStiffness(phase + seg.pairs[index] * base_pitch_m_) / MeshStiffness(segment, phase);
 }
 
-double TorsionalMesh::ShareAt(double s, bool left) const {
+void TorsionalMesh::Locate(double s, bool left, int* seg_out, double* phase_out, int* index) const {
   s = std::clamp(s, 0.0, length_m_);
   const double pb = base_pitch_m_;
   const int j =
@@ -145,8 +149,62 @@ double TorsionalMesh::ShareAt(double s, bool left) const {
   const int jj = static_cast<int>(std::lround((s - phase) / pb));
   const auto& pairs = segments_[seg].pairs;
   const auto it = std::find(pairs.begin(), pairs.end(), jj);
-  if (it == pairs.end()) return 0.0;
-  return PairShare(seg, static_cast<int>(it - pairs.begin()), phase);
+  *seg_out = seg;
+  *phase_out = phase;
+  *index = it == pairs.end() ? -1 : static_cast<int>(it - pairs.begin());
+}
+
+double TorsionalMesh::ShareAt(double s, bool left) const {
+  int seg = 0, index = -1;
+  double phase = 0;
+  Locate(s, left, &seg, &phase, &index);
+  return index < 0 ? 0.0 : PairShare(seg, index, phase);
+}
+
+double TorsionalMesh::ShareAt(double s, bool left, double x) const {
+  int seg = 0, index = -1;
+  double phase = 0;
+  Locate(s, left, &seg, &phase, &index);
+  return index < 0 ? 0.0 : PairShare(seg, index, phase, x);
+}
+
+double TorsionalMesh::ElasticForce(int segment, double phase, double x) const {
+  if (!relief_.Active()) return MeshStiffness(segment, phase) * x;
+  const MeshSegment& seg = segments_[segment];
+  double f = 0;
+  for (size_t i = 0; i < seg.pairs.size(); ++i) {
+    const double s = phase + seg.pairs[i] * base_pitch_m_;
+    const double k =
+        constant_mesh_n_per_m_ > 0 ? constant_mesh_n_per_m_ / seg.pairs.size() : PairStiffness(s);
+    f += k * std::max(0.0, x - relief_.GapAt(s, length_m_));
+  }
+  return f;
+}
+
+double TorsionalMesh::PairShare(int segment, int index, double phase, double x) const {
+  if (!relief_.Active()) return PairShare(segment, index, phase);
+  const MeshSegment& seg = segments_[segment];
+  const double total = ElasticForce(segment, phase, x);
+  if (!(total > 0)) return 0.0;
+  const double s = phase + seg.pairs[index] * base_pitch_m_;
+  const double k =
+      constant_mesh_n_per_m_ > 0 ? constant_mesh_n_per_m_ / seg.pairs.size() : PairStiffness(s);
+  return k * std::max(0.0, x - relief_.GapAt(s, length_m_)) / total;
+}
+
+double TorsionalMesh::StaticApproachAt(double s, bool left, double force) const {
+  int seg = 0, index = -1;
+  double phase = 0;
+  Locate(s, left, &seg, &phase, &index);
+  const MeshSegment& m = segments_[seg];
+  std::vector<double> k, gap;
+  for (int j : m.pairs) {
+    const double q = phase + j * base_pitch_m_;
+    k.push_back(constant_mesh_n_per_m_ > 0 ? constant_mesh_n_per_m_ / m.pairs.size()
+                                           : PairStiffness(q));
+    gap.push_back(relief_.GapAt(q, length_m_));
+  }
+  return CommonApproach(k, gap, force);
 }
 
 }  // namespace tehl

@@ -90,8 +90,8 @@ double TorsionalModel::PhaseAt(long period, double t) const {
 
 double TorsionalModel::MeshForce(ContactState s, int seg, double phase, double x, double v) const {
   switch (s) {
-    case ContactState::kDriveFlank:
-      return mesh_.MeshStiffness(seg, phase) * x + c_ * v;
+    case ContactState::kDriveFlank:  // tip relief acts on the drive flanks
+      return mesh_.ElasticForce(seg, phase, x) + c_ * v;
     case ContactState::kSeparated:
       return 0.0;
     case ContactState::kBackFlank:
@@ -116,7 +116,7 @@ double TorsionalModel::Acceleration(
       const double mu = p_.friction == FrictionLaw::kConstant
                             ? p_.friction_coefficient
                             : BuckinghamFriction(w1 * rho1 - w2 * rho2);
-      const double fj = f * mesh_.PairShare(seg, static_cast<int>(i), phase);
+      const double fj = f * mesh_.PairShare(seg, static_cast<int>(i), phase, x);
       tf1 += mu * fj * m.sliding[i] * rho1;
       tf2 += mu * fj * m.sliding[i] * rho2;
     }

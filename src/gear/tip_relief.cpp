@@ -17,30 +17,13 @@ struct Pair {
   double s, k, gap;
 };
 
-// The common approach delta with sum_j k_j max(0, delta - e_j) = F: start from every pair
-// loaded and drop the pairs whose gap the approach does not close; each drop lowers delta,
-// so a dropped pair never comes back and the loop ends after at most one pass per pair.
 double Approach(const std::vector<Pair>& pairs, double force) {
-  std::vector<bool> active(pairs.size(), true);
-  double delta = std::numeric_limits<double>::infinity();
-  for (size_t pass = 0; pass <= pairs.size(); ++pass) {
-    double ksum = 0, kgap = 0;
-    for (size_t j = 0; j < pairs.size(); ++j)
-      if (active[j]) {
-        ksum += pairs[j].k;
-        kgap += pairs[j].k * pairs[j].gap;
-      }
-    if (!(ksum > 0)) return std::numeric_limits<double>::infinity();
-    delta = (force + kgap) / ksum;
-    bool dropped = false;
-    for (size_t j = 0; j < pairs.size(); ++j)
-      if (active[j] && pairs[j].gap >= delta) {
-        active[j] = false;
-        dropped = true;
-      }
-    if (!dropped) break;
+  std::vector<double> k, gap;
+  for (const Pair& p : pairs) {
+    k.push_back(p.k);
+    gap.push_back(p.gap);
   }
-  return delta;
+  return CommonApproach(k, gap, force);
 }
 
 // The pairs in contact when the tracked pair is at s, s itself among them.
@@ -63,6 +46,32 @@ std::vector<Pair> PairsAt(const PathOfContact& path,
 }
 
 }  // namespace
+
+double CommonApproach(const std::vector<double>& k, const std::vector<double>& gap, double force) {
+  // Start from every pair loaded and drop the pairs whose gap the approach does not close;
+  // each drop lowers delta, so a dropped pair never comes back and the loop ends after at
+  // most one pass per pair.
+  std::vector<bool> active(k.size(), true);
+  double delta = std::numeric_limits<double>::infinity();
+  for (size_t pass = 0; pass <= k.size(); ++pass) {
+    double ksum = 0, kgap = 0;
+    for (size_t j = 0; j < k.size(); ++j)
+      if (active[j]) {
+        ksum += k[j];
+        kgap += k[j] * gap[j];
+      }
+    if (!(ksum > 0)) return std::numeric_limits<double>::infinity();
+    delta = (force + kgap) / ksum;
+    bool dropped = false;
+    for (size_t j = 0; j < k.size(); ++j)
+      if (active[j] && gap[j] >= delta) {
+        active[j] = false;
+        dropped = true;
+      }
+    if (!dropped) break;
+  }
+  return delta;
+}
 
 std::string ToString(ReliefShape shape) {
   return shape == ReliefShape::kParabolic ? "parabolic" : "linear";

@@ -58,7 +58,7 @@ DynamicsCase ReadDynamicsCase(Document& doc, const GearCase& c) {
 }
 
 std::unique_ptr<TorsionalMesh> MakeTorsionalMesh(const GearCase& c) {
-  return std::make_unique<TorsionalMesh>(*c.pair, c.pair_stiffness);
+  return std::make_unique<TorsionalMesh>(*c.pair, c.pair_stiffness, 33, c.tip_relief);
 }
 
 DynamicLoad::DynamicLoad(const GearCase& c, const DynamicsCase& d)
@@ -71,7 +71,14 @@ double DynamicLoad::LoadFactorAt(double s, bool left) const {
   s = std::clamp(s, 0.0, mesh_->length_m());
   double phase = s - std::floor(s / pb) * pb;
   if (left && phase < 1e-9 * pb && s > 0) phase = pb;
-  return response_.ForceAt(phase, left) / response_.static_force_n;
+  if (!mesh_->relief().Active()) return response_.ForceAt(phase, left) / response_.static_force_n;
+  // With tip relief the shares follow the approach: the tracked pair's dynamic load (its
+  // share at the dynamic x of the force) over its static load (its share at the static
+  // approach of F_static).
+  const double f0 = response_.static_force_n;
+  const double share0 = mesh_->ShareAt(s, left, mesh_->StaticApproachAt(s, left, f0));
+  const DynamicSample d = response_.SampleAt(phase, left);
+  return share0 > 0 ? d.force_n * mesh_->ShareAt(s, left, d.x_m) / (share0 * f0) : 1.0;
 }
 
 std::shared_ptr<const DynamicLoad> MakeDynamicLoad(Document& doc, const GearCase& c) {

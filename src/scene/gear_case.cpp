@@ -91,8 +91,8 @@ TipRelief ReadTipRelief(const Document& doc) {
   return r;
 }
 
-// The relief's own rules: a length with every amount, within the path, stiffness load sharing
-// and no torsional dynamics. Returns false when a rule is broken.
+// The relief's own rules: a length with every amount, within the path, stiffness load
+// sharing. Returns false when a rule is broken.
 bool CheckTipReliefKeys(Document& doc, const GearCase& c, double g) {
   bool ok = true;
   const TipRelief& r = c.tip_relief;
@@ -115,12 +115,6 @@ bool CheckTipReliefKeys(Document& doc, const GearCase& c, double g) {
   if (c.load_sharing != LoadSharing::kStiffness) {
     doc.Problem("gear", "load_sharing", "tip relief shares the load by the pair stiffnesses",
                 "load_sharing = \"stiffness\"");
-    ok = false;
-  }
-  if (doc.Bool("effects", "dynamic_load")) {
-    doc.Problem("effects", "dynamic_load",
-                "the torsional model has no tip relief: its mesh force would ignore it",
-                "dynamic_load = false, or no tip_relief_m");
     ok = false;
   }
   return ok;

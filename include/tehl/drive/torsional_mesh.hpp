@@ -21,6 +21,7 @@
 
 #include "tehl/gear/gear_pair.hpp"
 #include "tehl/gear/load_sharing.hpp"
+#include "tehl/gear/tip_relief.hpp"
 
 namespace tehl {
 
@@ -35,7 +36,12 @@ class TorsionalMesh {
  public:
   // The drive-flank mesh of `pair` with pair stiffness `k` [N/m] (see load_sharing.hpp);
   // chebyshev_points >= 3 samples of k on [0, g_alpha].
-  TorsionalMesh(const GearPair& pair, const PairStiffnessFn& k, int chebyshev_points = 33);
+  // With `relief` the drive-flank pairs carry k_j max(0, x - e_j) at the approach x
+  // (tip_relief.hpp); without it k_j x.
+  TorsionalMesh(const GearPair& pair,
+                const PairStiffnessFn& k,
+                int chebyshev_points = 33,
+                const TipRelief& relief = {});
   // The same geometry with a constant mesh stiffness k_mesh [N/m] shared equally between the
   // pairs in contact (for limits and tests).
   static TorsionalMesh Constant(const GearPair& pair, double mesh_stiffness_n_per_m);
@@ -64,6 +70,17 @@ class TorsionalMesh {
   // Share of the pair at s in [0, g_alpha]; `left` takes the limit from below at a switch.
   double ShareAt(double s_m, bool left) const;
 
+  // Tip relief (docs/gear.md "Tip relief"): the gap e(s) its relief opens [m], the elastic
+  // drive-flank force sum_j k_j max(0, x - e_j) at the approach x [N], the share of pair
+  // `index` at x (its stiffness share without relief) [-], and the static approach under the
+  // force F at the instant the pair at s sees [m]. Without relief: k_mesh x, k_i / k_mesh
+  // and F / k_mesh.
+  const TipRelief& relief() const { return relief_; }
+  double ElasticForce(int segment, double phase_m, double x_m) const;
+  double PairShare(int segment, int index, double phase_m, double x_m) const;
+  double ShareAt(double s_m, bool left, double x_m) const;
+  double StaticApproachAt(double s_m, bool left, double force_n) const;
+
   // Over one period: mean of k_mesh = (1/p_b) integral of k(s) over [0, g_alpha], and the
   // extremes (sampled) [N/m].
   double mean_stiffness_n_per_m() const { return mean_n_per_m_; }
@@ -73,6 +90,8 @@ class TorsionalMesh {
  private:
   TorsionalMesh() = default;
   void BuildSegments(double s_pitch_m);
+  // The segment, phase and pair index of the pair at s (index -1: not in contact).
+  void Locate(double s_m, bool left, int* segment, double* phase_m, int* index) const;
   void Summarize();
 
   double base_pitch_m_ = 0, length_m_ = 0, s_pitch_m_ = 0, rb1_m_ = 0, rb2_m_ = 0;
@@ -82,6 +101,7 @@ class TorsionalMesh {
   double constant_mesh_n_per_m_ = 0;                        // > 0: constant mode
   std::vector<double> nodes_m_, values_n_per_m_, weights_;  // Chebyshev-Lobatto interpolant
   std::vector<MeshSegment> segments_;
+  TipRelief relief_;
   double mean_n_per_m_ = 0, min_n_per_m_ = 0, max_n_per_m_ = 0;
 };
 

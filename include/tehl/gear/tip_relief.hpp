@@ -14,6 +14,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "tehl/gear/load_sharing.hpp"
 #include "tehl/gear/path_of_contact.hpp"
@@ -35,6 +36,12 @@ struct TipRelief {
   // Separation the relief opens between the flanks of the pair at s in [0, g_alpha] [m].
   double GapAt(double s_m, double path_length_m) const;
 };
+
+// The common approach delta of pairs of stiffness k_j [N/m] and relief gaps e_j [m] under the
+// force F [N] > 0: sum_j k_j max(0, delta - e_j) = F [m]. Infinite with no stiffness.
+double CommonApproach(const std::vector<double>& k_n_per_m,
+                      const std::vector<double>& gap_m,
+                      double force_n);
 
 struct RelievedShare {
   double share = 0;       // load share of the pair at s [-], in [0, 1]
