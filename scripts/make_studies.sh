@@ -20,7 +20,7 @@ if [[ ! -x "$TEHL" ]]; then
 fi
 studies=("$@")
 if [[ ${#studies[@]} -eq 0 ]]; then
-  studies=(load speed lubricant tooth_form roughness_amplitude roughness_wavelength)
+  studies=(load speed lubricant tooth_form roughness_amplitude roughness_wavelength tip_relief)
 fi
 mkdir -p "$OUT" docs/studies
 tables="$OUT/tables.md"
