@@ -115,6 +115,7 @@ G = "seed004_sae40.toml"   # gear case (35/105, m = 2 mm)
 F = "fzg_c.toml"           # gear case with shifts, tip radii and centre distance
 D = "disc_steady.toml"     # [contact] case
 A = "asymmetric_35_20.toml"  # asymmetric teeth
+R = "seed004_sae40_tip_relief.toml"  # tip relief on both gears
 
 
 # --- Deleted keys and sections ------------------------------------------------------------
@@ -355,6 +356,28 @@ def _():
     return c, "gear.pressure_angle_deg", line_of(c.key("gear", "pressure_angle_deg")), \
         "half-height teeth (addendum 0.5 m): the contact ratio drops below 1 (reported at " \
         "the drive pressure angle)"
+
+
+@mutation("gear_tip_relief_without_length")
+def _():
+    c = Case(G)
+    c.add("gear.pinion", "tip_relief_m", "10e-6")
+    return c, "gear.pinion.tip_relief_length_m", line_of(c.section("gear.pinion")), \
+        "a tip relief amount without its length along the line of action (reported at " \
+        "[gear.pinion])"
+
+
+@mutation("gear_tip_relief_longer_than_path")
+def _():
+    c = Case(G)
+    c.add("gear.wheel", "tip_relief_m", "10e-6")
+    return c, "gear.wheel.tip_relief_length_m", \
+        line_of(c.add("gear.wheel", "tip_relief_length_m", "0.02")), \
+        "a 20 mm tip relief on a 10.46 mm path of contact"
+
+
+mutation("unit_tip_relief_um")(wrong(R, "gear.pinion", "tip_relief_m", "13.0",
+                                     "tip relief in micrometres (13) for metres (13e-6)"))
 
 
 # --- Writing ------------------------------------------------------------------------------
