@@ -172,6 +172,15 @@ void Stiffness(std::ostream& o, const internal::GearCase& c) {
   o << "  load sharing: " << ToString(c.load_sharing)
     << (c.load_sharing == LoadSharing::kStiffness ? " (" + c.mesh_stiffness + ")" : std::string())
     << "\n";
+  if (c.load_sharing == LoadSharing::kStiffness && c.pair_stiffness) {
+    double lo = 1e300, hi = 0;
+    for (const MeshCycleRow& row : internal::GearCaseCycle(c, 401)) {
+      lo = std::min(lo, row.transmission_error_m);
+      hi = std::max(hi, row.transmission_error_m);
+    }
+    o << "  static transmission error under F_bt: " << Fmt("%.3f", lo * 1e6) << " .. "
+      << Fmt("%.3f", hi * 1e6) << " um (peak to peak " << Fmt("%.3f", (hi - lo) * 1e6) << " um)\n";
+  }
   const TipRelief& r = c.tip_relief;
   if (r.Active()) {
     o << "  tip relief (" << ToString(r.shape)
@@ -199,7 +208,7 @@ void WriteCsv(const std::string& file, const internal::GearCase& c, int points) 
         << q.reduced_radius_m << ',' << q.u1_m_s << ',' << q.u2_m_s << ',' << q.um_m_s << ','
         << q.srr << ',' << q.sliding_m_s << ',' << r.pair_stiffness_n_per_m << ','
         << r.mesh_stiffness_n_per_m << ',' << r.share << ',' << r.load_n_per_m << ',' << q.r1_m
-        << ',' << q.r2_m << ',' << q.pairs_in_contact << '\n';
+        << ',' << q.r2_m << ',' << q.pairs_in_contact << ',' << r.transmission_error_m << '\n';
   }
 }
 

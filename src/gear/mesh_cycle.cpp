@@ -50,13 +50,17 @@ std::vector<MeshCycleRow> MeshCycle(const PathOfContact& path,
       r.pair_stiffness_n_per_m = stiffness(r.contact.r1_m, r.contact.r2_m);
       r.mesh_stiffness_n_per_m = MeshStiffnessAt(path, q, stiffness);
     }
-    if (options.load_sharing == LoadSharing::kLinear)
+    if (options.load_sharing == LoadSharing::kLinear) {
       r.share = LinearLoadShare(path, q);
-    else if (options.relief.Active())
-      r.share = RelievedLoadShare(path, q, stiffness, options.relief, load.normal_force_n).share;
-    else
-      r.share =
-          r.mesh_stiffness_n_per_m > 0 ? r.pair_stiffness_n_per_m / r.mesh_stiffness_n_per_m : 0.0;
+    } else if (options.relief.Active()) {
+      const RelievedShare rs =
+          RelievedLoadShare(path, q, stiffness, options.relief, load.normal_force_n);
+      r.share = rs.share;
+      r.transmission_error_m = rs.approach_m;
+    } else if (r.mesh_stiffness_n_per_m > 0) {
+      r.share = r.pair_stiffness_n_per_m / r.mesh_stiffness_n_per_m;
+      r.transmission_error_m = load.normal_force_n / r.mesh_stiffness_n_per_m;
+    }
     r.load_n_per_m = r.share * load.load_per_width_n_per_m;
     rows.push_back(r);
   }

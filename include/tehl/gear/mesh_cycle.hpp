@@ -26,6 +26,9 @@ struct MeshCycleRow {
   double mesh_stiffness_n_per_m = 0;  // sum of k over the pairs in contact [N/m]
   double share = 0;                   // load share of the tracked pair [-]
   double load_n_per_m = 0;            // w = share F_bt / b [N/m]
+  // Static transmission error: the common approach of the pairs in contact along the line of
+  // action under F_bt (F_bt / k_mesh without relief; tip_relief.hpp); 0 with kLinear [m].
+  double transmission_error_m = 0;
 };
 
 // Rows at s_i = i g_alpha / (points - 1), with the switch points B and D inserted on both

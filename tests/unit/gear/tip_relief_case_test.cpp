@@ -141,5 +141,26 @@ TEST(TipReliefCase, AWheelReliefOverThePathLeavesTheSingleContactPart) {
   EXPECT_EQ(c->loaded_path.end_m, path.length_m());
 }
 
+TEST(TipReliefCase, TheTransmissionErrorIsTheCommonApproach) {
+  // Without relief the static transmission error is F_bt / k_mesh; with relief the approach
+  // of the relieved balance, which is larger wherever a relieved pair shares the load, and
+  // equal in single contact (the one pair carries F_bt either way).
+  Document plain_doc = ReadCase(ReliefCase("", "", ""));
+  const auto plain = ReadGearCase(plain_doc);
+  Document doc = ReadCase(ReliefCase("", Relief(10e-6, 4.5e-3), Relief(10e-6, 4.5e-3)));
+  const auto relieved = ReadGearCase(doc);
+  ASSERT_TRUE(plain && relieved);
+  const double force = NominalToothLoad(*plain->pair, plain->operating).normal_force_n;
+  const auto a = GearCaseCycle(*plain, 41), b = GearCaseCycle(*relieved, 41);
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_NEAR(a[i].transmission_error_m, force / a[i].mesh_stiffness_n_per_m, 1e-18);
+    if (a[i].contact.pairs_in_contact == 1)
+      EXPECT_NEAR(b[i].transmission_error_m, a[i].transmission_error_m, 1e-15);
+    else
+      EXPECT_GT(b[i].transmission_error_m, a[i].transmission_error_m);
+  }
+}
+
 }  // namespace
 }  // namespace tehl::internal
