@@ -43,6 +43,16 @@ def nearest(s, target):
     return int(np.argmin(np.abs(s - target)))
 
 
+def path_ends(cyc):
+    """The first and last solved films: A and E, or A' and E' when a tip relief lifts the
+    tracked pair off near the ends (attributes s_begin, s_end; absent in older files)."""
+    begin = cyc.attrs["s_begin"] if "s_begin" in cyc.attrs else 0.0
+    end = cyc.attrs["s_end"] if "s_end" in cyc.attrs else cyc.attrs["length"]
+    a = ("A", begin) if begin <= 0 else ("A'", begin)
+    e = ("E", end) if end >= cyc.attrs["length"] else ("E'", end)
+    return a, e
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("result")
@@ -95,8 +105,9 @@ def main():
     if "p" in prof and "h" in prof:
         x = prof["x"][:] * mm
         p, h = prof["p"], prof["h"]
-        picks = [("A", 0.0), ("B", cyc.attrs["s_B"]), ("pitch", cyc.attrs["s_C"]),
-                 ("D", cyc.attrs["s_D"]), ("E", cyc.attrs["length"])]
+        first, last = path_ends(cyc)
+        picks = [first, ("B", cyc.attrs["s_B"]), ("pitch", cyc.attrs["s_C"]),
+                 ("D", cyc.attrs["s_D"]), last]
         fig, (ap_, ah) = plt.subplots(2, 1, figsize=(7, 6.5), sharex=True)
         for label, target in picks:
             k = min(nearest(s, target * mm), p.shape[0] - 1)
@@ -162,8 +173,9 @@ def main():
     if "T_mid" in prof:
         x = prof["x"][:] * mm
         fig, ax = plt.subplots(figsize=(7, 4.2))
-        for label, target, color in [("A", 0.0, "C0"), ("pitch", cyc.attrs["s_C"], "C1"),
-                                     ("E", cyc.attrs["length"], "C2")]:
+        first, last = path_ends(cyc)
+        for label, target, color in [(*first, "C0"), ("pitch", cyc.attrs["s_C"], "C1"),
+                                     (*last, "C2")]:
             k = min(nearest(s, target * mm), prof["T_mid"].shape[0] - 1)
             ax.plot(x, prof["T_mid"][k, :] - 273.15, color=color, label=f"{label}: mid-film")
             ax.plot(x, prof["T1"][k, :] - 273.15, color=color, ls="--", lw=0.9,
