@@ -200,7 +200,7 @@ void WriteCsv(const std::string& file, const internal::GearCase& c, int points) 
   if (!out)
     throw InputError(InputProblem{"", 0, "--csv", file, "cannot be written", "a writable path"});
   out << "s_m,t_s,rho1_m,rho2_m,R_m,u1_m_s,u2_m_s,um_m_s,SRR,v_slide_m_s,k_pair_n_per_m,"
-         "k_mesh_n_per_m,share,w_n_per_m,r1_m,r2_m,pairs_in_contact\n";
+         "k_mesh_n_per_m,share,w_n_per_m,r1_m,r2_m,pairs_in_contact,ste_m\n";
   out.precision(10);
   for (const MeshCycleRow& r : internal::GearCaseCycle(c, points)) {
     const ContactPoint& q = r.contact;

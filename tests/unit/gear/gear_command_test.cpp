@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -92,6 +93,34 @@ TEST_F(GearCommand, CsvHasUnitsInTheHeaderAndOneRowPerSample) {
   int rows = 0;
   while (std::getline(in, line)) ++rows;
   EXPECT_EQ(rows, 15);  // 11 samples + both sides of B and D
+}
+
+TEST_F(GearCommand, TipReliefCaseReportsTheReliefAndTheTransmissionError) {
+  // In single contact the one pair carries F_bt = w b, so the static transmission error is
+  // w b / k_mesh there, with or without relief (tip_relief.hpp).
+  const fs::path csv = dir_ / "relief.csv";
+  const Result r =
+      Tehl("gear cases/seed004_sae40_tip_relief.toml --points 41 --csv " + csv.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("static transmission error under F_bt:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("tip relief (linear)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("loaded part of the path"), std::string::npos) << r.out;
+  std::ifstream in(csv);
+  std::string header, line;
+  std::getline(in, header);
+  ASSERT_NE(header.find(",ste_m"), std::string::npos) << header;
+  int single = 0;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 18u);
+    const double k_mesh = v[11], w = v[13], pairs = v[16], ste = v[17];
+    if (pairs != 1) continue;
+    EXPECT_NEAR(ste * k_mesh, w * 0.025, 1e-9 * w * 0.025);  // face width 25 mm
+    ++single;
+  }
+  EXPECT_GT(single, 3);
 }
 
 TEST_F(GearCommand, ProfileCsvListsBothGears) {
