@@ -55,7 +55,12 @@ class FilmField {
   // Recomputes the Eyring factor from a pressure solution, moving log f by `relaxation` of
   // the way to its target (1 = the factor of this state exactly); returns the largest
   // distance |log f_target - log f| before the move [-] (0 when Newtonian).
-  double UpdateRheology(const ContactConditions& c, const FilmState& s, double relaxation);
+  // With `accelerate` the move is an Anderson step on log f instead (history kept from
+  // Begin on): the coupling iteration of isothermal Ree-Eyring films.
+  double UpdateRheology(const ContactConditions& c,
+                        const FilmState& s,
+                        double relaxation,
+                        bool accelerate = false);
   // The under-relaxation of the coupling iteration's Eyring update without the energy
   // equation [-]. With it the factor moves all the way (relaxation 1) and the temperature
   // update's Anderson step mixes temperature and log f together.

@@ -300,7 +300,7 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
     p_last = s->p_pa;
     const Eigen::VectorXd x_in = newton_possible ? field_->CouplingState() : Eigen::VectorXd();
     change_f = field_->UpdateRheology(
-        c, *s, eff_.thermal ? 1.0 : internal::FilmField::kEyringRelaxation);
+        c, *s, eff_.thermal ? 1.0 : internal::FilmField::kEyringRelaxation, !eff_.thermal);
     change_t = 0.0;
     if (eff_.thermal) {
       // The energy solver checks its inputs and throws on a malformed flow field; inside a
@@ -366,9 +366,13 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
     sum.message =
         !energy_failure.empty()
             ? "energy equation: " + energy_failure
-            : "the pressure/temperature coupling did not settle in " + std::to_string(k) +
-                  " iterations (last temperature change " + internal::FormatShort(change_t) +
-                  " K, pressure change " + internal::FormatShort(change_p) + " p_max" +
+            : std::string(eff_.thermal ? "the pressure/temperature coupling"
+                                       : "the pressure/Eyring factor coupling") +
+                  " did not settle in " + std::to_string(k) + " iterations (" +
+                  (eff_.thermal
+                       ? "last temperature change " + internal::FormatShort(change_t) + " K, "
+                       : std::string("last ")) +
+                  "pressure change " + internal::FormatShort(change_p) + " p_max" +
                   (eff_.non_newtonian ? ", largest log change of the Eyring factor " +
                                             internal::FormatShort(change_f)
                                       : std::string()) +

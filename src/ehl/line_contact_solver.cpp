@@ -130,9 +130,13 @@ std::string LineContactSolver::Summary::BriefReport() const {
   if (continuation_stages) o << " (" << continuation_stages << " continuation stages)";
   if (krylov_iterations) o << ", " << krylov_iterations << " GMRES iterations";
   if (substeps > 1) o << ", " << substeps << " substeps";
-  if (coupling_iterations)
+  // Without the energy equation (an isothermal Ree-Eyring film) the balance is not computed
+  // (-1) and the coupling is the pressure's with the Eyring factor.
+  if (coupling_iterations && energy_balance_error >= 0)
     o << ", " << coupling_iterations << " thermal coupling iterations (last dT "
       << temperature_change_k << " K, energy balance " << energy_balance_error << ")";
+  else if (coupling_iterations)
+    o << ", " << coupling_iterations << " coupling iterations with the Eyring factor";
   if (coupling_newton_iterations)
     o << ", " << coupling_newton_iterations << " coupling Newton steps";
   if (temperature_backoffs)

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "lubricant/law_check.hpp"
+#include "lubricant/lubricant_schema.hpp"
 
 namespace tehl {
 using internal::Num;
@@ -49,6 +50,9 @@ Lubricant::Lubricant(std::string name,
          "must be >= 0 [Pa]", "a stress >= 0 [Pa]");
     rule(eyring_->limiting_stress_slope >= 0, "limiting_stress_slope",
          eyring_->limiting_stress_slope, "must be >= 0 [-]", "a slope >= 0 [-]");
+    rule(!(eyring_->limiting_stress_slope > 0) || eyring_->limiting_stress_pa > 0,
+         "limiting_stress_slope", eyring_->limiting_stress_slope, internal::kSlopeNeedsStressRule,
+         internal::kSlopeNeedsStressAllowed);
   }
   internal::ThrowIfInvalid("Lubricant", std::move(bad));
 }

@@ -95,6 +95,9 @@ Lubricant Read(Document doc) {
     eyring = EyringParameters{doc.Real("eyring", "eyring_stress_pa"),
                               doc.Real("eyring", "limiting_stress_pa"),
                               doc.Real("eyring", "limiting_stress_slope")};
+  if (eyring && eyring->limiting_stress_slope > 0 && !(eyring->limiting_stress_pa > 0))
+    doc.Problem("eyring", "limiting_stress_slope", internal::kSlopeNeedsStressRule,
+                internal::kSlopeNeedsStressAllowed);
   doc.ThrowIfProblems();
 
   const bool dh = doc.String("density", "model") == ToString(DensityLaw::kDowsonHigginson);

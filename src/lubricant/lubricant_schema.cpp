@@ -72,10 +72,13 @@ Schema BuildLubricantSchema() {
        {
            Required(Real("eyring_stress_pa", "Pa", "", "Eyring stress tau_0", 0.0, 1e9, false),
                     "5e6"),
-           Real("limiting_stress_pa", "Pa", "0.0",
-                "limiting shear stress tau_L0 at p = 0; with slope 0: no limit", 0.0, 1e10),
+           Real(
+               "limiting_stress_pa", "Pa", "0.0",
+               "limiting shear stress tau_L0 at p = 0 (0 with slope 0: no limit; > 0 with a slope)",
+               0.0, 1e10),
            Real("limiting_stress_slope", "-", "0.0",
-                "Lambda = d tau_L / d p of tau_L = tau_L0 + Lambda p", 0.0, 1.0),
+                "Lambda = d tau_L / d p of tau_L = tau_L0 + Lambda p (> 0 needs tau_L0 > 0)", 0.0,
+                1.0),
        }},
   };
   return s;
