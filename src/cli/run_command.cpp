@@ -29,6 +29,28 @@ void NoteContactSpike(const OutletSpike& spike) {
       kSpikeAdvice);
 }
 
+// Blok's flash temperature along the converged steps, and in thermal runs the film's own
+// hottest surfaces beside it (docs/thermal.md "Flash temperature").
+void PrintCycleFlash(const MeshCycleResult& r, size_t converged_steps) {
+  if (converged_steps == 0 || !r.elastic) return;
+  const std::vector<double> flash = r.BlokFlashRises();
+  size_t at = 0;
+  for (size_t k = 1; k < converged_steps; ++k)
+    if (flash[k] > flash[at]) at = k;
+  std::printf("flash temperature (Blok, with each step's mu): max rise %.3g K at s = %.4g mm",
+              flash[at], r.steps[at].s_m * 1e3);
+  if (r.thermal) {
+    double t1 = 0, t2 = 0;
+    const double t0 = r.inlet_temperature_k;
+    for (size_t k = 0; k < converged_steps; ++k) {
+      t1 = std::max(t1, r.steps[k].t1_max_k - t0);
+      t2 = std::max(t2, r.steps[k].t2_max_k - t0);
+    }
+    std::printf("; the film's surfaces: max rise %.3g K (pinion), %.3g K (wheel)", t1, t2);
+  }
+  std::printf("\n");
+}
+
 void NoteCycleSpikes(const MeshCycleResult& r, size_t converged_steps) {
   const std::vector<OutletSpike> spikes = r.OutletSpikes();
   int narrow = 0;
@@ -141,6 +163,7 @@ int RunGear(const RunArgs& a) {
                 hottest->t_max_k, hottest->s_m * 1e3, hottest->srr, mu / static_cast<double>(ok),
                 ok == r.steps.size() ? "" : " (converged steps)");
   }
+  PrintCycleFlash(r, ok);
   NoteCycleSpikes(r, ok);
   NoteCycleInlet(r, ok);
   std::printf("wrote %s%s%s\n", r.hdf5_path.c_str(), r.csv_path.empty() ? "" : " and ",

@@ -2,6 +2,7 @@
 list(APPEND TEHL_SOURCES
   src/ehl/grid.cpp
   src/ehl/film_thickness_formulas.cpp
+  src/ehl/flash_temperature.cpp
   src/ehl/reynolds_system.cpp
   src/ehl/cross_film.cpp
   src/ehl/film_field.cpp

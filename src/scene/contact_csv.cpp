@@ -44,6 +44,9 @@ std::string ContactStepsCsv(const std::string& file, const std::vector<ContactSt
                              {"u2_m_s", {}},      {"h_min_m", {}},     {"h_c_m", {}},
                              {"p_max_pa", {}},    {"t_max_k", {}},     {"mu", {}},
                              {"wall_time_s", {}}, {"spike_cells", {}}, {"inlet_deficit", {}}};
+  // Columns added later go after the existing ones, before the text column (readers look
+  // columns up by name; docs/results.md).
+  std::vector<Column> added = {{"t1_max_k", {}}, {"t2_max_k", {}}, {"dT_flash_blok_k", {}}};
   for (const ContactStepRecord& s : steps) {
     const double row[] = {s.time_s,
                           s.load_n_per_m,
@@ -58,14 +61,18 @@ std::string ContactStepsCsv(const std::string& file, const std::vector<ContactSt
                           s.outlet_spike.found ? s.outlet_spike.width_cells : -1.0,
                           s.inlet.estimated ? s.inlet.film_deficit : -1.0};
     for (size_t j = 0; j < num.size(); ++j) num[j].values.push_back(row[j]);
+    const double later[] = {s.t1_max_k, s.t2_max_k, s.flash_rise_blok_k};
+    for (size_t j = 0; j < added.size(); ++j) added[j].values.push_back(later[j]);
   }
   CheckColumns(file, num);
-  std::string o = Header(num) + ",newton_iterations,coupling_iterations,termination\n";
+  CheckColumns(file, added);
+  std::string o =
+      Header(num) + ",newton_iterations,coupling_iterations," + Header(added) + ",termination\n";
   for (size_t k = 0; k < steps.size(); ++k) {
     const LineContactSolver::Summary& sum = steps[k].summary;
     char tail[64];
     std::snprintf(tail, sizeof tail, ",%d,%d,", sum.total_iterations, sum.coupling_iterations);
-    o += Cells(num, k) + tail + ToString(sum.termination) + "\n";
+    o += Cells(num, k) + tail + Cells(added, k) + "," + ToString(sum.termination) + "\n";
   }
   return o;
 }

@@ -11,8 +11,9 @@
 namespace tehl::internal {
 
 // NAME_steps.csv: one row per step,
-//   t_s,w_n_per_m,u1_m_s,u2_m_s,h_min_m,h_c_m,p_max_pa,t_max_k,mu,wall_time_s,
-//   newton_iterations,coupling_iterations,termination
+//   t_s,w_n_per_m,u1_m_s,u2_m_s,h_min_m,h_c_m,p_max_pa,t_max_k,mu,wall_time_s,spike_cells,
+//   inlet_deficit,newton_iterations,coupling_iterations,t1_max_k,t2_max_k,dT_flash_blok_k,
+//   termination
 // Throws NonFiniteError ("... CSV <file> column <name>[<row>] = nan") at the first NaN or Inf.
 std::string ContactStepsCsv(const std::string& file, const std::vector<ContactStepRecord>& steps);
 

@@ -13,6 +13,7 @@
 #include "scene/contact_case.hpp"
 #include "scene/contact_csv.hpp"
 #include "scene/film_case.hpp"
+#include "tehl/ehl/flash_temperature.hpp"
 #include "tehl/error.hpp"
 #include "tehl/units.hpp"
 
@@ -101,9 +102,18 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
     // step's status column says it failed.
     const double mu = solver.Friction(c, state).coefficient;
     rec.friction_coefficient = std::isfinite(mu) ? mu : 0.0;
-    rec.t_max_k = thermal && state.temperature.Matches(grid.size(), nz)
-                      ? state.temperature.MaxTemperature()
-                      : film.inlet_temperature_k;
+    const bool heated = thermal && state.temperature.Matches(grid.size(), nz);
+    rec.t_max_k = heated ? state.temperature.MaxTemperature() : film.inlet_temperature_k;
+    rec.t1_max_k = heated ? state.temperature.t1_k.maxCoeff() : film.inlet_temperature_k;
+    rec.t2_max_k = heated ? state.temperature.t2_k.maxCoeff() : film.inlet_temperature_k;
+    // Each surface's own speed through the contact, whichever way it moves.
+    const double v1 = std::abs(c.u1_m_s), v2 = std::abs(c.u2_m_s);
+    rec.flash_rise_blok_k = !film.effects.elastic ? -1.0
+                            : v1 + v2 > 0 && c.load_n_per_m > 0
+                                ? BlokFlashTemperature({rec.friction_coefficient, c.load_n_per_m,
+                                                        v1, v2, inlet.half_width_m},
+                                                       film.solids.body1, film.solids.body2)
+                                : 0.0;
     rec.summary = s;
     result.steps.push_back(rec);
     if (!ro.quiet)

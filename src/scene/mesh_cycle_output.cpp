@@ -58,6 +58,11 @@ const std::vector<CycleColumn>& CycleColumns() {
   return cols;
 }
 
+constexpr const char* kBlokMeaning =
+    "Blok flash temperature rise with this step's mu, w, speeds and Hertz half-width: the "
+    "friction heat released over the Hertz zone, both surfaces at the same peak rise "
+    "(docs/thermal.md \"Flash temperature\"; -1: rigid solids)";
+
 std::vector<double> Column(const MeshCycleResult& r, const CycleColumn& c) {
   std::vector<double> v;
   for (const auto& k : r.steps) v.push_back(c.get(k));
@@ -117,6 +122,7 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
                    "estimated film deficit of the truncated inlet, 1 - h/h(unbounded inlet) "
                    "(-1: no estimate, e.g. an isoviscous film)");
   }
+  h5.WriteVector("/cycle/dT_flash_blok", r.BlokFlashRises(), "K", kBlokMeaning);
   h5.WriteStrings("/cycle/zone", zones, "segment of the path: A-B, B-D or D-E");
   h5.SetAttribute("/cycle", "length", r.length_m, "m");
   h5.SetAttribute("/cycle", "s_begin", r.begin_m, "m");  // A' (0 = A)
@@ -205,6 +211,7 @@ void WriteMeshCycleCsv(const std::string& path, const MeshCycleResult& r) {
                                : unit == "K"   ? "_k"
                                                : "_" + unit;
     table.push_back({std::string(c.name) + suffix, Column(r, c)});
+    if (std::string(c.name) == "mu") table.push_back({"dT_flash_blok_k", r.BlokFlashRises()});
   }
   // Whether each row's solve converged (1) or not (0): a run that stops writes its last,
   // unconverged step too (its termination is in the HDF5 file's /solver/termination).

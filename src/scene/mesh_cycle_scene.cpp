@@ -78,6 +78,25 @@ std::vector<InletTruncation> MeshCycleResult::InletTruncations() const {
   return out;
 }
 
+std::vector<double> MeshCycleResult::BlokFlashRises() const {
+  std::vector<double> out;
+  for (const MeshCycleStep& st : steps) {
+    if (!elastic || !(st.load_n_per_m > 0)) {
+      out.push_back(elastic ? 0.0 : -1.0);
+      continue;
+    }
+    FlashTemperatureInputs in;
+    in.friction_coefficient = st.friction_coefficient;
+    in.load_n_per_m = st.load_n_per_m;
+    in.u1_m_s = st.u1_m_s;
+    in.u2_m_s = st.u2_m_s;
+    in.half_width_m =
+        LineContactHertz(st.load_n_per_m, st.reduced_radius_m, e_prime_pa).half_width_m;
+    out.push_back(BlokFlashTemperature(in, solids.body1, solids.body2));
+  }
+  return out;
+}
+
 std::vector<OutletSpike> MeshCycleResult::OutletSpikes() const {
   std::vector<OutletSpike> out;
   if (x_m.size() < 2) return out;
@@ -191,6 +210,8 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   r.e_prime_pa = e_prime;
   r.x_start_b = film.x_start_b;
   r.elastic = film.effects.elastic;
+  r.solids = film.solids;
+  r.inlet_temperature_k = film.inlet_temperature_k;
   const ViscosityValue inlet = internal::InletViscosity(film);
   r.inlet_viscosity_pa_s = inlet.eta_pa_s;
   r.pressure_viscosity_per_pa = inlet.deta_dp / inlet.eta_pa_s;

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -98,6 +99,28 @@ TEST(MeshCycleResults, FileMatchesDocsResultsMd) {
   const std::vector<double> spike = testing::Hdf5Doubles(f, "/cycle/spike_cells");
   ASSERT_EQ(spike.size(), 13u);
   for (double w : spike) EXPECT_TRUE(w == -1.0 || (w > 0.0 && w < 256.0)) << w;
+  // Blok's flash temperature of each row from its own mu, w, u1, u2 and R, with the seed 004
+  // bronze of the case (VALIDATION.md section 5: E = 117 GPa, nu = 0.34, rho = 7890 kg/m^3,
+  // k = 55 W/(m K), c = 375 J/(kg K)) on both gears: b = sqrt(8 w R / (pi E')) (Hertz) and
+  // theta = c_B mu w |u1 - u2| / (sqrt(b) e (sqrt(u1) + sqrt(u2))), c_B = 0.785983
+  // (docs/thermal.md "Flash temperature").
+  {
+    const std::vector<double> flash = testing::Hdf5Doubles(f, "/cycle/dT_flash_blok"),
+                              mu = testing::Hdf5Doubles(f, "/cycle/mu"),
+                              w = testing::Hdf5Doubles(f, "/cycle/w"),
+                              u1 = testing::Hdf5Doubles(f, "/cycle/u1"),
+                              u2 = testing::Hdf5Doubles(f, "/cycle/u2"),
+                              radius = testing::Hdf5Doubles(f, "/cycle/R");
+    ASSERT_EQ(flash.size(), 13u);
+    const double e_prime = 117e9 / (1 - 0.34 * 0.34), e = std::sqrt(55.0 * 7890.0 * 375.0);
+    for (size_t k = 0; k < flash.size(); ++k) {
+      const double b = std::sqrt(8 * w[k] * radius[k] / (M_PI * e_prime));
+      const double expected = 0.785983 * mu[k] * w[k] * std::abs(u1[k] - u2[k]) /
+                              (std::sqrt(b) * e * (std::sqrt(u1[k]) + std::sqrt(u2[k])));
+      EXPECT_NEAR(flash[k], expected, 1e-5 * expected + 1e-12) << "row " << k;
+    }
+    EXPECT_GT(flash.front(), 1.0);  // A: sliding at SRR -0.72
+  }
   EXPECT_EQ(testing::Hdf5StringAttribute(f, "/", "converged"), "true");
   // /case is the case as run: the reduced keys and the defaults filled in.
   const std::string case_text = testing::Hdf5Text(f, "/case");
@@ -111,7 +134,7 @@ TEST(MeshCycleResults, FileMatchesDocsResultsMd) {
   std::getline(csv, header);
   EXPECT_EQ(header,
             "s_m,t_s,R_m,u1_m_s,u2_m_s,um_m_s,SRR,w_n_per_m,w_static_n_per_m,h_min_m,h_c_m,"
-            "p_max_pa,mu,C_RT,C_UT,C_WT,converged");
+            "p_max_pa,mu,dT_flash_blok_k,C_RT,C_UT,C_WT,converged");
   int rows = 0;
   while (std::getline(csv, line)) ++rows;
   EXPECT_EQ(rows, 13);
@@ -156,7 +179,9 @@ TEST(MeshCycleResults, ThermalFileAddsTheDocumentedTemperatureDatasets) {
   std::ifstream csv(dir + "/" + stem + "_cycle.csv");
   std::string header;
   std::getline(csv, header);
-  EXPECT_NE(header.find(",T_max_k,T_mid_k,T1_max_k,T2_max_k,"), std::string::npos) << header;
+  EXPECT_NE(header.find(",mu,dT_flash_blok_k,T_max_k,T_mid_k,T1_max_k,T2_max_k,"),
+            std::string::npos)
+      << header;
 }
 
 TEST(MeshCycleResults, PlotWritesTheThreeFiguresAndRejectsAMissingFile) {

@@ -29,6 +29,9 @@ struct ContactStepRecord {
                                     //   run is isothermal [K]
   double friction_coefficient = 0;  // mu = (|F1| + |F2|) / (2 w), seed 004 eq. 16
                                     //   (LineContactSolver::Friction, as /cycle/mu) [-]
+  double t1_max_k = 0, t2_max_k = 0;  // hottest surface of body 1, 2 (inlet T when isothermal) [K]
+  double flash_rise_blok_k = 0;       // Blok's flash temperature rise with this mu (as
+                                      //   /cycle/dT_flash_blok); -1 for rigid solids [K]
   double wall_time_s = 0;           // wall time of this step's solve (substeps included) [s]
   OutletSpike outlet_spike;         // the outlet pressure spike and its width in cells
   InletTruncation inlet;            // what the truncated inlet costs the film (estimate)

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "tehl/ehl/flash_temperature.hpp"
 #include "tehl/ehl/inlet_truncation.hpp"
 #include "tehl/ehl/line_contact_solver.hpp"
 #include "tehl/ehl/outlet_spike.hpp"
@@ -91,6 +92,12 @@ struct MeshCycleResult {
   bool elastic = true;                   // effects.elastic of the case
   double inlet_viscosity_pa_s = 0;       // eta(p = 0, T0) [Pa s]
   double pressure_viscosity_per_pa = 0;  // d ln(eta)/dp there; 0 when not piezoviscous [1/Pa]
+  ContactSolids solids;                  // thermal properties of pinion (body1) and wheel
+  double inlet_temperature_k = 0;        // T0 of the oil and the bulk of both solids [K]
+  // Blok's flash temperature rise of each step with its own mu, w, u1, u2 and Hertz
+  // half-width (BlokFlashTemperature; docs/thermal.md "Flash temperature"), one per row;
+  // -1 for rigid solids (no Hertz zone) [K].
+  std::vector<double> BlokFlashRises() const;
 };
 
 // Step ends s_1..s_N in (0, g], uniform within each of the segments [0, s_b], [s_b, s_d],

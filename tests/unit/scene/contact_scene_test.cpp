@@ -254,8 +254,16 @@ TEST(ContactScene, IsothermalDiscRecordsTheInletTemperatureAndRollingFriction) {
                                          "inlet_deficit",
                                          "newton_iterations",
                                          "coupling_iterations",
+                                         "t1_max_k",
+                                         "t2_max_k",
+                                         "dT_flash_blok_k",
                                          "termination"};
   EXPECT_EQ(steps.head, head);
+  // Isothermal: the surfaces stay at the inlet temperature.
+  EXPECT_NEAR(steps.At(0, "t1_max_k"), kInletK, 1e-9 * kInletK);
+  EXPECT_NEAR(steps.At(0, "t2_max_k"), kInletK, 1e-9 * kInletK);
+  EXPECT_NEAR(steps.At(0, "dT_flash_blok_k"), s.flash_rise_blok_k,
+              1e-9 * std::abs(s.flash_rise_blok_k) + 1e-300);
   // %.9e keeps 10 significant digits.
   EXPECT_NEAR(steps.At(0, "t_max_k"), kInletK, 1e-9 * kInletK);
   EXPECT_NEAR(steps.At(0, "mu"), s.friction_coefficient, 1e-9 * s.friction_coefficient);
