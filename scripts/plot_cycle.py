@@ -7,7 +7,8 @@ writes, like seed 004 Figs. 3-6:
   <name>_cycle.png     C_RT = R/R0, C_UT = um/u0, C_WT = w/w0 along the path (Fig. 3)
   <name>_profiles.png  film pressure and thickness over x at A, B, the pitch point, D, E (Fig. 4)
   <name>_path.png      h_min, h_c and p_max along the path (Fig. 6)
-  <name>_thermal.png   thermal runs: T_max, mid-film and surface temperatures and the friction
+  <name>_thermal.png   thermal runs: T_max, mid-film and surface temperatures (with Blok's
+                       flash temperature for the film's mu) and the friction
                        coefficient along the path, with the slide-to-roll ratio (Figs. 5-6)
   <name>_temperature.png  thermal runs: mid-film and surface temperatures over x at A, the
                        pitch point and E
@@ -153,6 +154,10 @@ def main():
         at.plot(s, cyc["T_mid"][:] - 273.15, ls="--", label=r"mid-film $T_{max}$")
         at.plot(s, cyc["T1_max"][:] - 273.15, label="pinion surface")
         at.plot(s, cyc["T2_max"][:] - 273.15, label="wheel surface")
+        if "dT_flash_blok" in cyc and "T0" in cyc.attrs:
+            # Blok's estimate with the film's own mu (docs/thermal.md "Flash temperature").
+            at.plot(s, cyc.attrs["T0"] + cyc["dT_flash_blok"][:] - 273.15, color="0.3",
+                    lw=0.9, ls="-.", label=r"surface by Blok (film's $\mu$)")
         at.set_ylabel("temperature [C]")
         af.plot(s, cyc["mu"][:], color="C3", label=r"friction coefficient $\mu$")
         af.set_ylabel(r"$\mu$ [-]")

@@ -133,6 +133,7 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
   h5.SetAttribute("/cycle", "R0", r.r0_m, "m");
   h5.SetAttribute("/cycle", "u0", r.u0_m_s, "m/s");
   h5.SetAttribute("/cycle", "w0", r.w0_n_per_m, "N/m");
+  h5.SetAttribute("/cycle", "T0", r.inlet_temperature_k, "K");
   h5.SetAttribute("/cycle", "planned_steps", r.planned_steps, "-");
 
   h5.WriteVector("/profiles/x", r.x_m, "m", "grid nodes, x = 0 at the contact point");
