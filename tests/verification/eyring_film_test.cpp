@@ -121,12 +121,7 @@ EyringDisc SolveDisc(double um, double srr, bool thermal) {
   r.c = r.disc.Conditions(Sae40());
   LineContactSolver::Options o;
   o.film_nodes = 11;
-  FilmEffects e;
-  e.transient = false;
-  e.thermal = thermal;
-  e.non_newtonian = true;
-  LineContactSolver solver(UniformGrid::AroundHertz(r.disc.half_width_m(), r.n),
-                           r.disc.e_prime_pa, Sae40(), e, o);
+  LineContactSolver solver = testing::DiscSolver(r.disc, Sae40(), r.n, thermal, o, {}, true);
   r.summary = solver.SolveSteady(r.c, &r.state);
   r.mu = solver.Friction(r.c, r.state).coefficient;
   return r;

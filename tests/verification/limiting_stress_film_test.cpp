@@ -57,11 +57,7 @@ LimitedDisc Solve(const Lubricant& oil, double um, double srr, bool thermal) {
   const UniformGrid grid = UniformGrid::AroundHertz(r.disc.half_width_m(), n);
   LineContactSolver::Options o;
   o.film_nodes = 11;
-  FilmEffects e;
-  e.transient = false;
-  e.thermal = thermal;
-  e.non_newtonian = true;
-  LineContactSolver solver(grid, r.disc.e_prime_pa, oil, e, o);
+  LineContactSolver solver = testing::DiscSolver(r.disc, oil, n, thermal, o, {}, true);
   r.summary = solver.SolveSteady(r.c, &r.state);
   r.mu = solver.Friction(r.c, r.state).coefficient;
   const EyringParameters& ey = *oil.eyring();

@@ -86,7 +86,7 @@ inline LineContactSolver DiscSolver(const ThermalDisc& d,
   FilmEffects e;
   e.transient = false;
   e.thermal = thermal;
-  e.non_newtonian = thermal && eyring;
+  e.non_newtonian = eyring;
   return LineContactSolver(UniformGrid::AroundHertz(d.half_width_m(), n), d.e_prime_pa, oil, e, o,
                            nullptr, nullptr, solids);
 }
