@@ -90,12 +90,15 @@ double TorsionalModel::PhaseAt(long period, double t) const {
 
 double TorsionalModel::MeshForce(ContactState s, int seg, double phase, double x, double v) const {
   switch (s) {
-    case ContactState::kDriveFlank:  // tip relief acts on the drive flanks
+    case ContactState::kDriveFlank:
       return mesh_.ElasticForce(seg, phase, x) + c_ * v;
     case ContactState::kSeparated:
       return 0.0;
     case ContactState::kBackFlank:
-      return mesh_.MeshStiffness(seg, phase) * (x + p_.backlash_m) + c_ * v;
+      // The back flanks close by -(x + b) on the drive flanks' mesh, their tips relieved as
+      // the drive flanks' (a relief is cut on both flanks of a tooth): without relief
+      // k(t) (x + b).
+      return -mesh_.ElasticForce(seg, phase, -(x + p_.backlash_m)) + c_ * v;
   }
   return 0.0;
 }

@@ -15,6 +15,9 @@
 //   drive flank (x > 0):      F = k(t) x + c x'
 //   separated (-b <= x <= 0): F = 0
 //   back flank (x < -b):      F = k(t) (x + b) + c x'
+// With tip relief (torsional_mesh.hpp) the elastic parts are sum_j k_j max(0, x - e_j) on the
+// drive flanks and -sum_j k_j max(0, -(x + b) - e_j) on the back flanks (both flanks of a
+// tooth relieved alike; the back flanks use the drive flanks' mesh, as k(t) above).
 // Damping c = 2 zeta sqrt(k_mean m_e) (seed 000 eq. 4.9 with the period-mean stiffness and
 // the equivalent mass of the x coordinate; the printed eq. 4.9 swaps J1 and J2).
 // Friction: pair j carries F_j = F k_j / k_mesh; at its contact the friction force mu F_j

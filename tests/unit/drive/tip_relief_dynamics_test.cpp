@@ -110,5 +110,39 @@ TEST(TipReliefDynamics, ALongReliefSizedForTheLoadMakesTheMeshForceConstant) {
   EXPECT_GT(at(2.0, 0.02, relieved).dynamic_load_factor, 1.2);
 }
 
+TEST(TipReliefDynamics, BackFlanksCarryTheirReliefAsTheDriveFlanks) {
+  // A relief is cut on both flanks of a tooth: closing the back flanks by d = -(x + b) meets
+  // the same gaps as closing the drive flanks by d, so the back-flank force is the drive-flank
+  // force with the sign turned (the back flanks use the drive flanks' mesh, as k(t) does).
+  // Without relief both are k(t) d, unchanged.
+  testing::Seed000Dynamics d;
+  const PairStiffnessFn k = AsPairStiffnessFn(*d.model);
+  const PathOfContact path(d.pair, d.params.pinion_speed_rad_s);
+  const double force = d.params.pinion_torque_nm / d.mesh->pinion_base_radius_m();
+  const double x0 = force / d.mesh->MeshStiffness(0, 0.0);
+  TipRelief r;
+  r.wheel_amount_m = r.pinion_amount_m = 1.5 * x0;
+  r.wheel_length_m = r.pinion_length_m = 0.6 * path.s_b_m();
+  const TorsionalMesh relieved(d.pair, k, 33, r);
+  const TorsionalModel with(relieved, d.params), without(*d.mesh, d.params);
+  const double b = d.params.backlash_m;
+  int below_plain = 0;
+  for (int i = 0; i < 20; ++i) {
+    const double phase = relieved.base_pitch_m() * (i + 0.5) / 20;
+    const int seg = relieved.SegmentAt(phase);
+    for (double depth : {0.25 * x0, x0, 3 * x0}) {
+      const double back = with.MeshForce(ContactState::kBackFlank, seg, phase, -(depth + b), 0);
+      const double drive = with.MeshForce(ContactState::kDriveFlank, seg, phase, depth, 0);
+      // -(x + b) recovers the depth to round-off.
+      EXPECT_NEAR(back, -drive, 1e-9 * std::abs(drive)) << "phase " << phase << " depth " << depth;
+      const double plain = without.MeshForce(ContactState::kBackFlank, seg, phase, -(depth + b), 0);
+      EXPECT_NEAR(plain, -d.mesh->MeshStiffness(seg, phase) * depth, 1e-12 * std::abs(plain));
+      EXPECT_LE(-back, -plain * (1 + 1e-12));  // a gap only takes force away
+      if (-back < -plain * (1 - 1e-6)) ++below_plain;
+    }
+  }
+  EXPECT_GT(below_plain, 0);  // the relieved tips do unload the back flanks somewhere
+}
+
 }  // namespace
 }  // namespace tehl
