@@ -185,6 +185,14 @@ int RunContact(const RunArgs& a) {
   const auto& last = r.steps.back();
   std::printf("h_min = %.6g m, h_c = %.6g m, p_max = %.6g Pa\n", last.h_min_m, last.h_c_m,
               last.p_max_pa);
+  if (last.summary.usable() && last.flash_rise_blok_k > 0) {  // sliding, elastic
+    std::printf("mu = %.4g; flash temperature (Blok, with this mu): rise %.3g K",
+                last.friction_coefficient, last.flash_rise_blok_k);
+    if (last.t_max_k > r.inlet_temperature_k)  // thermal: the film's own surfaces beside it
+      std::printf("; the film's surfaces: max rise %.3g K (body 1), %.3g K (body 2)",
+                  last.t1_max_k - r.inlet_temperature_k, last.t2_max_k - r.inlet_temperature_k);
+    std::printf("\n");
+  }
   if (last.summary.usable()) {
     NoteContactSpike(last.outlet_spike);
     NoteContactInlet(last.inlet, r.x_start_b);

@@ -70,6 +70,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   };
   ContactRunResult result;
   result.x_start_b = film.x_start_b;
+  result.inlet_temperature_k = film.inlet_temperature_k;
   FilmState state;
   const bool thermal = film.effects.thermal;
   const int nz = film.options.film_nodes;
