@@ -137,6 +137,11 @@ SceneRow GearRow(const std::string& path) {
     r.mu_mean = Mean(mu);
     r.mu_max = Max(mu);
   }
+  if (h5.Exists("/cycle/T1_max") && h5.Exists("/cycle/T2_max"))
+    r.t_surface_max_k =
+        std::max(Max(h5.Doubles("/cycle/T1_max")), Max(h5.Doubles("/cycle/T2_max")));
+  if (h5.Exists("/cycle/dT_flash_blok"))
+    r.flash_blok_max_k = Max(h5.Doubles("/cycle/dT_flash_blok"));
   r.wall_time_s = h5.DoubleAttribute("/", "wall_time");
   const bool ok = h5.StringAttribute("/", "converged") == "true";
   r.status = ok ? "ok" : "not_converged";
@@ -175,8 +180,9 @@ SceneRow ContactRow(const std::string& path) {
   };
   const size_t ih = col("h_min_m"), ic = col("h_c_m"), ip = col("p_max_pa"),
                it = col("termination");
-  const size_t itm = find("t_max_k"), imu = find("mu"), iwt = find("wall_time_s");
-  std::vector<double> h_min, h_c, p_max, t_max, mu;
+  const size_t itm = find("t_max_k"), imu = find("mu"), iwt = find("wall_time_s"),
+               it1 = find("t1_max_k"), it2 = find("t2_max_k"), ifl = find("dT_flash_blok_k");
+  std::vector<double> h_min, h_c, p_max, t_max, mu, surface, flash;
   SceneRow r;
   r.status = "ok";
   while (std::getline(in, line)) {
@@ -189,6 +195,9 @@ SceneRow ContactRow(const std::string& path) {
     if (itm != none) t_max.push_back(std::stod(f[itm]));
     if (imu != none) mu.push_back(std::stod(f[imu]));
     if (iwt != none) r.wall_time_s += std::stod(f[iwt]);
+    if (it1 != none && it2 != none)
+      surface.push_back(std::max(std::stod(f[it1]), std::stod(f[it2])));
+    if (ifl != none) flash.push_back(std::stod(f[ifl]));
     if (f[it] != "converged") {
       r.status = "not_converged";
       r.message = f[it];
@@ -202,7 +211,48 @@ SceneRow ContactRow(const std::string& path) {
   r.t_max_max_k = Max(t_max);
   r.mu_mean = Mean(mu);
   r.mu_max = Max(mu);
+  r.t_surface_max_k = Max(surface);
+  r.flash_blok_max_k = Max(flash);
   return r;
+}
+
+// The numeric summary of a row, in the order of the CSV columns and of the text form.
+struct SummaryColumn {
+  const char* csv;   // CSV column
+  const char* hdf5;  // dataset under /summary
+  const char* unit;
+  const char* meaning;
+  double SceneRow::*field;
+};
+
+const std::vector<SummaryColumn>& SummaryColumns() {
+  static const std::vector<SummaryColumn> cols = {
+      {"h_min_min_m", "h_min_min", "m", "minimum over the cycle of the minimum film thickness",
+       &SceneRow::h_min_min_m},
+      {"h_c_pitch_m", "h_c_pitch", "m", "central film thickness at the pitch point",
+       &SceneRow::h_c_pitch_m},
+      {"h_c_min_m", "h_c_min", "m", "minimum over the cycle of the central film thickness",
+       &SceneRow::h_c_min_m},
+      {"p_max_max_pa", "p_max_max", "Pa", "maximum over the cycle of the film pressure",
+       &SceneRow::p_max_max_pa},
+      {"t_max_max_k", "T_max_max", "K",
+       "maximum over the cycle of the film temperature (0: not in the result)",
+       &SceneRow::t_max_max_k},
+      {"mu_mean", "mu_mean", "-", "mean friction coefficient over the steps (0: not in the result)",
+       &SceneRow::mu_mean},
+      {"mu_max", "mu_max", "-",
+       "maximum friction coefficient over the steps (0: not in the result)", &SceneRow::mu_max},
+      {"wall_time_s", "wall_time", "s", "run time of the scene", &SceneRow::wall_time_s},
+      {"t_surface_max_k", "T_surface_max", "K",
+       "maximum over the cycle of the hottest surface temperature of either body (0: not in the "
+       "result)",
+       &SceneRow::t_surface_max_k},
+      {"dT_flash_blok_max_k", "dT_flash_blok_max", "K",
+       "maximum over the cycle of Blok's flash temperature rise with the film's mu (0: not in "
+       "the result)",
+       &SceneRow::flash_blok_max_k},
+  };
+  return cols;
 }
 
 std::string OneLine(std::string s) {
@@ -253,9 +303,7 @@ std::string SceneRowsToText(const std::vector<SceneRow>& rows) {
   for (const auto& r : rows) {
     o << r.scene << '\t' << OneLine(r.status) << '\t' << OneLine(r.message) << '\t'
       << OneLine(r.result_path) << '\t' << (r.computed ? 1 : 0) << '\t' << r.steps;
-    for (double x : {r.h_min_min_m, r.h_c_pitch_m, r.h_c_min_m, r.p_max_max_pa, r.t_max_max_k,
-                     r.mu_mean, r.mu_max, r.wall_time_s})
-      o << '\t' << Num(x);
+    for (const SummaryColumn& c : SummaryColumns()) o << '\t' << Num(r.*c.field);
     o << '\n';
   }
   return o.str();
@@ -271,7 +319,8 @@ std::vector<SceneRow> SceneRowsFromText(const std::string& text) {
       if (c == '\t') f.emplace_back();
       else f.back() += c;
     }
-    if (f.size() != 14) throw std::runtime_error("malformed scene row: " + line);
+    const size_t numeric = SummaryColumns().size();
+    if (f.size() != 6 + numeric) throw std::runtime_error("malformed scene row: " + line);
     SceneRow r;
     r.scene = std::stoi(f[0]);
     r.status = f[1];
@@ -279,9 +328,7 @@ std::vector<SceneRow> SceneRowsFromText(const std::string& text) {
     r.result_path = f[3];
     r.computed = f[4] == "1";
     r.steps = std::stoi(f[5]);
-    double* d[] = {&r.h_min_min_m, &r.h_c_pitch_m, &r.h_c_min_m, &r.p_max_max_pa,
-                   &r.t_max_max_k, &r.mu_mean,     &r.mu_max,    &r.wall_time_s};
-    for (int i = 0; i < 8; ++i) *d[i] = std::stod(f[6 + i]);
+    for (size_t i = 0; i < numeric; ++i) r.*SummaryColumns()[i].field = std::stod(f[6 + i]);
     rows.push_back(std::move(r));
   }
   return rows;
@@ -340,36 +387,20 @@ std::vector<std::string> WriteStudyIndex(const Study& study, std::vector<SceneRo
       h5.SetAttribute(name, "key", p.key);
     }
     h5.WriteStrings("/parameter_labels", labels, "the [[vary]] labels, in study order");
-    h5.WriteVector("/summary/h_min_min", column(&SceneRow::h_min_min_m), "m",
-                   "minimum over the cycle of the minimum film thickness");
-    h5.WriteVector("/summary/h_c_pitch", column(&SceneRow::h_c_pitch_m), "m",
-                   "central film thickness at the pitch point");
-    h5.WriteVector("/summary/h_c_min", column(&SceneRow::h_c_min_m), "m",
-                   "minimum over the cycle of the central film thickness");
-    h5.WriteVector("/summary/p_max_max", column(&SceneRow::p_max_max_pa), "Pa",
-                   "maximum over the cycle of the film pressure");
-    h5.WriteVector("/summary/T_max_max", column(&SceneRow::t_max_max_k), "K",
-                   "maximum over the cycle of the film temperature (0: not in the result)");
-    h5.WriteVector("/summary/mu_mean", column(&SceneRow::mu_mean), "-",
-                   "mean friction coefficient over the steps (0: not in the result)");
-    h5.WriteVector("/summary/mu_max", column(&SceneRow::mu_max), "-",
-                   "maximum friction coefficient over the steps (0: not in the result)");
-    h5.WriteVector("/summary/wall_time", column(&SceneRow::wall_time_s), "s",
-                   "run time of the scene");
+    for (const SummaryColumn& c : SummaryColumns())
+      h5.WriteVector(std::string("/summary/") + c.hdf5, column(c.field), c.unit, c.meaning);
     h5.Commit();
   }
   std::ostringstream csv;
   csv << "scene";
   for (const auto& p : study.parameters) csv << ',' << CsvText(p.label);
-  csv << ",h_min_min_m,h_c_pitch_m,h_c_min_m,p_max_max_pa,t_max_max_k,mu_mean,mu_max,"
-         "wall_time_s,steps,status,computed,result\n";
+  for (const SummaryColumn& c : SummaryColumns()) csv << ',' << c.csv;
+  csv << ",steps,status,computed,result\n";
   for (const auto& r : rows) {
     csv << r.scene;
     for (size_t i = 0; i < study.parameters.size(); ++i)
       csv << ',' << CsvText(study.parameters[i].values_toml[study.scenes[r.scene].value_index[i]]);
-    for (double x : {r.h_min_min_m, r.h_c_pitch_m, r.h_c_min_m, r.p_max_max_pa, r.t_max_max_k,
-                     r.mu_mean, r.mu_max, r.wall_time_s})
-      csv << ',' << Num(x);
+    for (const SummaryColumn& c : SummaryColumns()) csv << ',' << Num(r.*c.field);
     csv << ',' << r.steps << ',' << CsvText(r.status) << ',' << (r.computed ? 1 : 0) << ','
         << CsvText(r.result_path) << '\n';
   }

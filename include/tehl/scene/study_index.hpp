@@ -26,6 +26,10 @@ struct SceneRow {
   double t_max_max_k = 0;         // max over the cycle of T_max [K] (0: not in the file)
   double mu_mean = 0;             // mean over the steps of mu [-] (0: not in the file)
   double mu_max = 0;              // max over the steps of mu [-] (0: not in the file)
+  double t_surface_max_k = 0;     // max over the cycle of both surfaces' hottest temperature
+                                  //   [K] (0: not in the file)
+  double flash_blok_max_k = 0;    // max over the cycle of Blok's flash temperature rise [K]
+                                  //   (0: not in the file)
   double wall_time_s = 0;         // the scene's run time [s]
   int steps = 0;                  // rows of the cycle table [-]
 };

@@ -50,6 +50,31 @@ TEST(StudyIndex, ContactStepsWithoutTheNewColumnsGiveZeros) {
   EXPECT_EQ(r.mu_mean, 0.0);
   EXPECT_EQ(r.mu_max, 0.0);
   EXPECT_EQ(r.wall_time_s, 0.0);
+  EXPECT_EQ(r.t_surface_max_k, 0.0);
+  EXPECT_EQ(r.flash_blok_max_k, 0.0);
+}
+
+// The surface and flash temperature columns (docs/results.md): the hottest surface of either
+// body over the steps, max(321, 318, 325, 324) = 325 K, and the largest flash rise,
+// max(2.5, 4.0) = 4 K. Any column order is read.
+TEST(StudyIndex, ContactStepsWithSurfaceAndFlashColumnsAreSummarized) {
+  StudyScene scene;
+  const Study s = OneSceneStudy(
+      "flash_steps",
+      "t_s,w_n_per_m,u1_m_s,u2_m_s,h_min_m,h_c_m,p_max_pa,t_max_k,mu,wall_time_s,"
+      "newton_iterations,coupling_iterations,t1_max_k,t2_max_k,dT_flash_blok_k,termination\n"
+      "0.0,1e5,1.2,0.8,3.0e-7,4.0e-7,6.0e8,330,0.03,0.5,12,8,321,318,2.5,converged\n"
+      "1e-4,1e5,1.2,0.8,2.9e-7,3.9e-7,6.1e8,340,0.04,0.25,5,4,325,324,4.0,converged\n",
+      &scene);
+  const SceneRow r = ReadSceneRow(s, scene);
+  EXPECT_EQ(r.status, "ok");
+  EXPECT_EQ(r.t_surface_max_k, 325.0);
+  EXPECT_EQ(r.flash_blok_max_k, 4.0);
+  // The text form carries them between MPI ranks.
+  const std::vector<SceneRow> back = SceneRowsFromText(SceneRowsToText({r}));
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(back[0].t_surface_max_k, 325.0);
+  EXPECT_EQ(back[0].flash_blok_max_k, 4.0);
 }
 
 // The new columns: T_max the largest, mu mean and max, wall time the sum over the steps.
@@ -116,6 +141,9 @@ TEST(StudyIndex, DiscSweepIndexCarriesTemperatureFrictionAndWallTime) {
     EXPECT_GT(std::stod(first[k][im]), 0.0) << k;
     EXPECT_EQ(std::stod(first[k][ix]), std::stod(first[k][im])) << k;  // one step
     EXPECT_GT(std::stod(first[k][iw]), 0.0) << k;
+    // Thermal rolling: the surfaces warm above the inlet; no sliding, no flash rise.
+    EXPECT_GT(std::stod(first[k][Column(head, "t_surface_max_k")]), 313.15) << k;
+    EXPECT_EQ(std::stod(first[k][Column(head, "dT_flash_blok_max_k")]), 0.0) << k;
   }
   const testing::RunResult again =
       testing::RunTehl("sweep --resume -j 2 -q -o '" + out + "' '" + dir + "/study.toml'");
