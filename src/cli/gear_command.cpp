@@ -1,4 +1,4 @@
-// tehl gear CASE [--csv FILE] [--profile FILE] [--points N]
+// tehl gear CASE [--csv FILE] [--profile FILE] [--points N] [--mu MU]
 // The gear pair of a case: geometry, contact ratios, path of contact, kinematics, load,
 // Hertz scales and mesh stiffness by each method. Exit 2 (with every problem) for bad
 // geometry.
@@ -14,7 +14,9 @@
 
 #include "cli/commands.hpp"
 #include "scene/case_reader.hpp"
+#include "scene/film_case.hpp"
 #include "scene/gear_case.hpp"
+#include "tehl/ehl/flash_temperature.hpp"
 #include "tehl/error.hpp"
 #include "tehl/gear/path_of_contact.hpp"
 #include "tehl/gear/tooth_blank.hpp"
@@ -195,20 +197,64 @@ void Stiffness(std::ostream& o, const internal::GearCase& c) {
   }
 }
 
-void WriteCsv(const std::string& file, const internal::GearCase& c, int points) {
+// Blok's flash temperature rise of each row with friction coefficient mu (docs/thermal.md
+// "Flash temperature"): the row's pair load w, its speeds and the Hertz half-width at w [K].
+std::vector<double> FlashRises(const internal::GearCase& c,
+                               const std::vector<MeshCycleRow>& rows,
+                               const ContactSolids& solids,
+                               double mu) {
+  std::vector<double> out;
+  const double e_prime = c.ReducedModulusPa();
+  for (const MeshCycleRow& r : rows) {
+    const ContactPoint& q = r.contact;
+    out.push_back(
+        r.load_n_per_m > 0
+            ? BlokFlashTemperature(
+                  {mu, r.load_n_per_m, q.u1_m_s, q.u2_m_s,
+                   LineContactHertz(r.load_n_per_m, q.reduced_radius_m, e_prime).half_width_m},
+                  solids.body1, solids.body2)
+            : 0.0);
+  }
+  return out;
+}
+
+void Flash(std::ostream& o, const internal::GearCase& c, const ContactSolids& solids, double mu) {
+  const std::vector<MeshCycleRow> rows = internal::GearCaseCycle(c, 401);
+  const std::vector<double> rise = FlashRises(c, rows, solids, mu);
+  const size_t at = static_cast<size_t>(std::max_element(rise.begin(), rise.end()) - rise.begin());
+  o << "\nFlash temperature (Blok, mu = " << Fmt("%.4g", mu)
+    << ", the load sharing's pair load, Hertz half-width at it):\n  largest rise "
+    << Fmt("%.2f", rise[at]) << " K at s = " << Fmt("%.3f", rows[at].contact.s_m * 1e3)
+    << " mm (SRR " << Fmt("%+.3f", rows[at].contact.srr) << "); at A " << Fmt("%.2f", rise.front())
+    << " K, at E " << Fmt("%.2f", rise.back())
+    << " K\n  a film's own surfaces can run up to twice as hot with the same mu (docs/thermal.md\n"
+       "  \"Flash temperature\"); `tehl run` with thermal = true solves them\n";
+}
+
+void WriteCsv(const std::string& file,
+              const internal::GearCase& c,
+              int points,
+              const ContactSolids& solids,
+              std::optional<double> mu) {
   std::ofstream out(file);
   if (!out)
     throw InputError(InputProblem{"", 0, "--csv", file, "cannot be written", "a writable path"});
   out << "s_m,t_s,rho1_m,rho2_m,R_m,u1_m_s,u2_m_s,um_m_s,SRR,v_slide_m_s,k_pair_n_per_m,"
-         "k_mesh_n_per_m,share,w_n_per_m,r1_m,r2_m,pairs_in_contact,ste_m\n";
+         "k_mesh_n_per_m,share,w_n_per_m,r1_m,r2_m,pairs_in_contact,ste_m"
+      << (mu ? ",dT_flash_blok_k" : "") << "\n";
   out.precision(10);
-  for (const MeshCycleRow& r : internal::GearCaseCycle(c, points)) {
+  const std::vector<MeshCycleRow> rows = internal::GearCaseCycle(c, points);
+  const std::vector<double> rise = mu ? FlashRises(c, rows, solids, *mu) : std::vector<double>();
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const MeshCycleRow& r = rows[i];
     const ContactPoint& q = r.contact;
     out << q.s_m << ',' << q.time_s << ',' << q.rho1_m << ',' << q.rho2_m << ','
         << q.reduced_radius_m << ',' << q.u1_m_s << ',' << q.u2_m_s << ',' << q.um_m_s << ','
         << q.srr << ',' << q.sliding_m_s << ',' << r.pair_stiffness_n_per_m << ','
         << r.mesh_stiffness_n_per_m << ',' << r.share << ',' << r.load_n_per_m << ',' << q.r1_m
-        << ',' << q.r2_m << ',' << q.pairs_in_contact << ',' << r.transmission_error_m << '\n';
+        << ',' << q.r2_m << ',' << q.pairs_in_contact << ',' << r.transmission_error_m;
+    if (mu) out << ',' << rise[i];
+    out << '\n';
   }
 }
 
@@ -230,6 +276,7 @@ Command AddGearCommand(CLI::App& app) {
   struct Args {
     std::string case_file, csv, profile;
     int points = 201;
+    std::optional<double> mu;
   };
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand(
@@ -243,6 +290,10 @@ Command AddGearCommand(CLI::App& app) {
   sub->add_option("--profile", args->profile, "Write tooth profile points (gear, flank, x_m, y_m)");
   sub->add_option("--points", args->points, "Samples from A to E in --csv (>= 2)")
       ->check(CLI::Range(2, 1000000));
+  sub->add_option("--mu", args->mu,
+                  "Friction coefficient for Blok's flash temperature along the path (printed; "
+                  "with --csv also the column dT_flash_blok_k)")
+      ->check(CLI::Range(0.0, 1.0));
   return {sub, [args]() {
             internal::Document doc = internal::ReadCaseDocument(args->case_file);
             std::optional<internal::GearCase> c = internal::ReadGearCase(doc);
@@ -252,9 +303,11 @@ Command AddGearCommand(CLI::App& app) {
             Geometry(o, *c);
             Path(o, *c);
             Stiffness(o, *c);
+            const ContactSolids solids = internal::ReadContactSolids(doc);
+            if (args->mu) Flash(o, *c, solids, *args->mu);
             for (const auto& w : c->warnings) o << "warning: " << w.ToString() << "\n";
             std::cout << o.str();
-            if (!args->csv.empty()) WriteCsv(args->csv, *c, args->points);
+            if (!args->csv.empty()) WriteCsv(args->csv, *c, args->points, solids, args->mu);
             if (!args->profile.empty()) WriteProfile(args->profile, *c->pair);
             return kExitOk;
           }};

@@ -45,6 +45,23 @@ GridUnits GridUnitsFor(const FilmCase& film, double b_m, double r_m, double um_m
   return {kRigidInletUnit * l, kRigidOutletUnit * l};
 }
 
+ContactSolids ReadContactSolids(const Document& doc) {
+  auto solid = [&](const std::string& section, const std::string& suffix) {
+    return SolidThermal{doc.Real(section, "density" + suffix + "_kg_m3"),
+                        doc.Real(section, "heat_capacity" + suffix + "_j_kgk"),
+                        doc.Real(section, "conductivity" + suffix + "_w_mk")};
+  };
+  ContactSolids solids;
+  if (doc.HasSection("contact")) {
+    solids.body1 = solid("contact", "_1");
+    solids.body2 = solid("contact", "_2");
+  } else if (doc.HasSection("gear")) {
+    solids.body1 = solid("gear.pinion", "");
+    solids.body2 = solid("gear.wheel", "");
+  }
+  return solids;
+}
+
 FilmCase ReadFilmCase(Document& doc) {
   FilmCase f;
   const std::string name = doc.String("lubricant", "name");
@@ -77,19 +94,7 @@ FilmCase ReadFilmCase(Document& doc) {
                 "the lubricant '" + name + "' has no [eyring] section (Eyring stress)",
                 "non_newtonian = false, or a lubricant with [eyring] eyring_stress_pa");
 
-  // Thermal properties of the two bodies: [gear.pinion]/[gear.wheel] or [contact].
-  auto solid = [&](const std::string& section, const std::string& suffix) {
-    return SolidThermal{doc.Real(section, "density" + suffix + "_kg_m3"),
-                        doc.Real(section, "heat_capacity" + suffix + "_j_kgk"),
-                        doc.Real(section, "conductivity" + suffix + "_w_mk")};
-  };
-  if (doc.HasSection("contact")) {
-    f.solids.body1 = solid("contact", "_1");
-    f.solids.body2 = solid("contact", "_2");
-  } else if (doc.HasSection("gear")) {
-    f.solids.body1 = solid("gear.pinion", "");
-    f.solids.body2 = solid("gear.wheel", "");
-  }
+  f.solids = ReadContactSolids(doc);
 
   f.grid_points = static_cast<int>(doc.Int("numerics", "grid_points"));
   f.x_start_b = doc.Real("numerics", "x_start_b");

@@ -56,4 +56,8 @@ GridUnits GridUnitsFor(const FilmCase& film, double b_m, double r_m, double um_m
 // Effects this version cannot simulate yet are problems at their key, never ignored.
 FilmCase ReadFilmCase(Document& doc);
 
+// Thermal properties of the two bodies: [gear.pinion] / [gear.wheel] or [contact] (keys with
+// _1 / _2); the defaults of the schema where not given.
+ContactSolids ReadContactSolids(const Document& doc);
+
 }  // namespace tehl::internal

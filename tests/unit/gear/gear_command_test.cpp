@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -121,6 +122,39 @@ TEST_F(GearCommand, TipReliefCaseReportsTheReliefAndTheTransmissionError) {
     ++single;
   }
   EXPECT_GT(single, 3);
+}
+
+TEST_F(GearCommand, MuGivesBlokFlashTemperatureAlongThePath) {
+  // theta = c_B mu w |u1 - u2| / (sqrt(b) e (sqrt(u1) + sqrt(u2))) with the seed 004 bronze on
+  // both gears (VALIDATION.md section 5: E = 117 GPa, nu = 0.34, rho = 7890 kg/m^3,
+  // k = 55 W/(m K), c = 375 J/(kg K)), b = sqrt(8 w R / (pi E')) at the row's w, and
+  // c_B = 0.785983 (docs/thermal.md "Flash temperature"). Zero at the pitch point's rolling.
+  const fs::path csv = dir_ / "flash.csv";
+  const Result r =
+      Tehl("gear cases/seed004_sae40.toml --mu 0.05 --points 21 --csv " + csv.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("Flash temperature (Blok, mu = 0.05"), std::string::npos) << r.out;
+  std::ifstream in(csv);
+  std::string header, line;
+  std::getline(in, header);
+  ASSERT_NE(header.find(",ste_m,dT_flash_blok_k"), std::string::npos) << header;
+  const double e_prime = 117e9 / (1 - 0.34 * 0.34), e = std::sqrt(55.0 * 7890.0 * 375.0);
+  int rows = 0;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 19u);
+    const double radius = v[4], u1 = v[5], u2 = v[6], w = v[13], flash = v[18];
+    const double b = std::sqrt(8 * w * radius / (M_PI * e_prime));
+    const double expected = 0.785983 * 0.05 * w * std::abs(u1 - u2) /
+                            (std::sqrt(b) * e * (std::sqrt(u1) + std::sqrt(u2)));
+    EXPECT_NEAR(flash, expected, 1e-5 * expected + 1e-12) << line;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 25);  // 21 samples + both sides of B and D
+  // A negative mu is refused (exit 2, the command line).
+  EXPECT_EQ(Tehl("gear cases/seed004_sae40.toml --mu -0.1").code, 2);
 }
 
 TEST_F(GearCommand, ProfileCsvListsBothGears) {
