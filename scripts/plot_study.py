@@ -89,7 +89,11 @@ def print_table(f, labels, status):
                                                               "{:.4f}"),
             ("p_max_max", "max p_max [GPa]", 1e-9, "{:.4f}"),
             ("T_max_max", "max T_max [K]", 1.0, "{:.1f}"), ("mu_mean", "mean mu", 1.0, "{:.4f}"),
-            ("mu_max", "max mu", 1.0, "{:.4f}"), ("wall_time", "wall [s]", 1.0, "{:.0f}")]
+            ("mu_max", "max mu", 1.0, "{:.4f}"),
+            ("T_surface_max", "max T_surface [K]", 1.0, "{:.1f}"),
+            ("dT_flash_blok_max", "max Blok rise [K]", 1.0, "{:.2f}"),
+            ("wall_time", "wall [s]", 1.0, "{:.0f}")]
+    cols = [c for c in cols if c[0] in f["summary"]]  # index files of earlier versions
     head = ["scene"] + labels + [c[1] for c in cols] + ["steps", "status"]
     print("| " + " | ".join(head) + " |")
     print("|" + "---|" * len(head))
