@@ -299,8 +299,9 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
       change_p = (s->p_pa - p_last).cwiseAbs().maxCoeff() / std::max(s->MaxPressure(), 1.0);
     p_last = s->p_pa;
     const Eigen::VectorXd x_in = newton_possible ? field_->CouplingState() : Eigen::VectorXd();
-    change_f = field_->UpdateRheology(
-        c, *s, eff_.thermal ? 1.0 : internal::FilmField::kEyringRelaxation, !eff_.thermal);
+    change_f =
+        field_->UpdateRheology(c, *s, eff_.thermal ? 1.0 : internal::FilmField::kEyringRelaxation,
+                               !eff_.thermal && opt_.eyring_anderson);
     change_t = 0.0;
     if (eff_.thermal) {
       // The energy solver checks its inputs and throws on a malformed flow field; inside a

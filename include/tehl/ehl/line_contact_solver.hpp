@@ -152,6 +152,9 @@ class LineContactSolver {
     // for this many iterations (or has used them all), Newton-Krylov on the coupling takes
     // over from the best iterate (docs/theory.md, "Thermal coupling"); 0 = never [-].
     int coupling_newton_after = 6;
+    // Isothermal Ree-Eyring films: each coupling iteration takes an Anderson step on log f
+    // (docs/thermal.md "Ree-Eyring film"); false: the relaxed step, half-way in log f.
+    bool eyring_anderson = true;
     std::vector<std::string> Validate() const;  // every violated rule; empty = valid
   };
 
