@@ -101,11 +101,11 @@ void Report(std::ostream& o,
   const TipRelief& relief = mesh.relief();
   if (relief.Active()) {
     std::snprintf(buf, sizeof buf,
-                  "  tip relief (%s) on the drive flanks: pinion %.2f um over %.3f mm, wheel "
-                  "%.2f um over %.3f mm; each pair carries k (x - e), e its relief gap\n",
-                  ToString(relief.shape).c_str(), relief.pinion_amount_m * 1e6,
-                  relief.pinion_length_m * 1e3, relief.wheel_amount_m * 1e6,
-                  relief.wheel_length_m * 1e3);
+                  "  tip relief on both flanks: pinion %.2f um over %.3f mm (%s), wheel "
+                  "%.2f um over %.3f mm (%s); each pair carries k (x - e), e its relief gap\n",
+                  relief.pinion_amount_m * 1e6, relief.pinion_length_m * 1e3,
+                  ToString(relief.pinion_shape).c_str(), relief.wheel_amount_m * 1e6,
+                  relief.wheel_length_m * 1e3, ToString(relief.wheel_shape).c_str());
     o << buf;
   }
   std::snprintf(buf, sizeof buf,

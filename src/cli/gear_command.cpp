@@ -185,11 +185,10 @@ void Stiffness(std::ostream& o, const internal::GearCase& c) {
   }
   const TipRelief& r = c.tip_relief;
   if (r.Active()) {
-    o << "  tip relief (" << ToString(r.shape)
-      << "): pinion C_a = " << Fmt("%.2f", r.pinion_amount_m * 1e6) << " um over "
-      << Fmt("%.3f", r.pinion_length_m * 1e3)
-      << " mm before E, wheel C_a = " << Fmt("%.2f", r.wheel_amount_m * 1e6) << " um over "
-      << Fmt("%.3f", r.wheel_length_m * 1e3) << " mm after A\n";
+    o << "  tip relief: pinion C_a = " << Fmt("%.2f", r.pinion_amount_m * 1e6) << " um over "
+      << Fmt("%.3f", r.pinion_length_m * 1e3) << " mm before E (" << ToString(r.pinion_shape)
+      << "), wheel C_a = " << Fmt("%.2f", r.wheel_amount_m * 1e6) << " um over "
+      << Fmt("%.3f", r.wheel_length_m * 1e3) << " mm after A (" << ToString(r.wheel_shape) << ")\n";
     o << "  loaded part of the path (share >= 1 %): " << Fmt("%.3f", c.loaded_path.begin_m * 1e3)
       << " .. " << Fmt("%.3f", c.loaded_path.end_m * 1e3) << " mm; the pair stays loaded to A"
       << " below a wheel relief of " << Fmt("%.2f", c.relief_limit_a_m * 1e6)

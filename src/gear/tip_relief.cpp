@@ -86,9 +86,9 @@ std::optional<ReliefShape> ReliefShapeFromString(const std::string& name) {
 double TipRelief::GapAt(double s, double g) const {
   double e = 0;
   if (wheel_amount_m > 0 && wheel_length_m > 0 && s < wheel_length_m)
-    e += wheel_amount_m * Shape(shape, (wheel_length_m - s) / wheel_length_m);
+    e += wheel_amount_m * Shape(wheel_shape, (wheel_length_m - s) / wheel_length_m);
   if (pinion_amount_m > 0 && pinion_length_m > 0 && s > g - pinion_length_m)
-    e += pinion_amount_m * Shape(shape, (s - (g - pinion_length_m)) / pinion_length_m);
+    e += pinion_amount_m * Shape(pinion_shape, (s - (g - pinion_length_m)) / pinion_length_m);
   return e;
 }
 

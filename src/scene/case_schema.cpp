@@ -35,8 +35,8 @@ SectionSpec GearSection() {
           Text("load_sharing", "\"stiffness\"", "how the load is split between tooth pairs",
                {"stiffness", "linear"}),
           Text("tip_relief_shape", "\"linear\"",
-               "shape of the tip reliefs of [gear.pinion] and "
-               "[gear.wheel] along the line of action (ISO 21771)",
+               "shape of the tip reliefs of [gear.pinion] and [gear.wheel] along the line of "
+               "action (ISO 21771), unless a gear gives its own",
                {"linear", "parabolic"}),
       }};
 }
@@ -60,6 +60,9 @@ SectionSpec GearMember(const std::string& name, const std::string& what, const c
           Positive("tip_relief_length_m", "m", "",
                    "length of the tip relief along the line of action, from the end of the path "
                    "this tip touches (needed with tip_relief_m > 0)"),
+          Text("tip_relief_shape", "",
+               "shape of this gear's tip relief; absent = [gear] tip_relief_shape",
+               {"linear", "parabolic"}),
       }};
 }
 

@@ -81,7 +81,14 @@ std::string Fmt3(double v) {
 
 TipRelief ReadTipRelief(const Document& doc) {
   TipRelief r;
-  r.shape = ReliefShapeFromString(doc.String("gear", "tip_relief_shape")).value_or(r.shape);
+  auto shape_of = [&](const char* section) {
+    const std::string name = doc.Given(section, "tip_relief_shape")
+                                 ? doc.String(section, "tip_relief_shape")
+                                 : doc.String("gear", "tip_relief_shape");
+    return ReliefShapeFromString(name).value_or(ReliefShape::kLinear);
+  };
+  r.pinion_shape = shape_of("gear.pinion");
+  r.wheel_shape = shape_of("gear.wheel");
   r.pinion_amount_m = doc.Real("gear.pinion", "tip_relief_m");
   r.wheel_amount_m = doc.Real("gear.wheel", "tip_relief_m");
   if (doc.Given("gear.pinion", "tip_relief_length_m"))

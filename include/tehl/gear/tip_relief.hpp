@@ -8,8 +8,9 @@
 //
 // Orientation (the pinion drives): the wheel's tip meets the pinion's root at A (s = 0) and
 // the pinion's tip meets the wheel's root at E (s = g_alpha). So the wheel's relief opens
-// e(s) = C_a,2 shape((L_2 - s) / L_2) on [0, L_2] and the pinion's e(s) = C_a,1 shape((s -
-// g_alpha + L_1) / L_1) on [g_alpha - L_1, g_alpha]; shape(x) = x (linear) or x^2 (parabolic).
+// e(s) = C_a,2 shape_2((L_2 - s) / L_2) on [0, L_2] and the pinion's e(s) = C_a,1 shape_1((s -
+// g_alpha + L_1) / L_1) on [g_alpha - L_1, g_alpha]; shape(x) = x (linear) or x^2 (parabolic),
+// each gear its own.
 #pragma once
 
 #include <optional>
@@ -30,7 +31,8 @@ struct TipRelief {
   double pinion_length_m = 0;  // L_Ca,1 along the line of action from E [m], > 0 with an amount
   double wheel_amount_m = 0;   // C_a,2 at the wheel tip [m], >= 0
   double wheel_length_m = 0;   // L_Ca,2 along the line of action from A [m]
-  ReliefShape shape = ReliefShape::kLinear;
+  ReliefShape pinion_shape = ReliefShape::kLinear;
+  ReliefShape wheel_shape = ReliefShape::kLinear;
 
   bool Active() const { return pinion_amount_m > 0 || wheel_amount_m > 0; }
   // Separation the relief opens between the flanks of the pair at s in [0, g_alpha] [m].

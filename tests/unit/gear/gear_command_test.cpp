@@ -104,7 +104,7 @@ TEST_F(GearCommand, TipReliefCaseReportsTheReliefAndTheTransmissionError) {
       Tehl("gear cases/seed004_sae40_tip_relief.toml --points 41 --csv " + csv.string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("static transmission error under F_bt:"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("tip relief (linear)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("mm before E (linear)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("loaded part of the path"), std::string::npos) << r.out;
   std::ifstream in(csv);
   std::string header, line;

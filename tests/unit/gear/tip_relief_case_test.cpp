@@ -45,13 +45,30 @@ std::string Relief(double amount_m, double length_m) {
   return text;
 }
 
+TEST(TipReliefCase, AGearsOwnShapeOverridesThePairs) {
+  Document doc = ReadCase(ReliefCase("tip_relief_shape = \"linear\"\n",
+                                     Relief(8e-6, 2e-3) + "tip_relief_shape = \"parabolic\"\n",
+                                     Relief(5e-6, 1.5e-3)));
+  const auto c = ReadGearCase(doc);
+  ASSERT_TRUE(doc.problems().empty()) << Problems(doc);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->tip_relief.pinion_shape, ReliefShape::kParabolic);
+  EXPECT_EQ(c->tip_relief.wheel_shape, ReliefShape::kLinear);
+  Document bad = ReadCase(
+      ReliefCase("", Relief(8e-6, 2e-3) + "tip_relief_shape = \"cubic\"\n", Relief(5e-6, 1.5e-3)));
+  ReadGearCase(bad);
+  ASSERT_FALSE(bad.problems().empty());
+  EXPECT_EQ(bad.problems().front().key, "gear.pinion.tip_relief_shape") << Problems(bad);
+}
+
 TEST(TipReliefCase, KeysReachTheGearCase) {
   Document doc = ReadCase(
       ReliefCase("tip_relief_shape = \"parabolic\"\n", Relief(8e-6, 2e-3), Relief(5e-6, 1.5e-3)));
   const auto c = ReadGearCase(doc);
   ASSERT_TRUE(doc.problems().empty()) << Problems(doc);
   ASSERT_TRUE(c);
-  EXPECT_EQ(c->tip_relief.shape, ReliefShape::kParabolic);
+  EXPECT_EQ(c->tip_relief.pinion_shape, ReliefShape::kParabolic);
+  EXPECT_EQ(c->tip_relief.wheel_shape, ReliefShape::kParabolic);
   EXPECT_DOUBLE_EQ(c->tip_relief.pinion_amount_m, 8e-6);
   EXPECT_DOUBLE_EQ(c->tip_relief.pinion_length_m, 2e-3);
   EXPECT_DOUBLE_EQ(c->tip_relief.wheel_amount_m, 5e-6);

@@ -35,9 +35,13 @@ TEST(TipRelief, GapFollowsTheShapeFromEachTip) {
   EXPECT_EQ(r.GapAt(5e-3, g), 0.0);
   EXPECT_NEAR(r.GapAt(9.5e-3, g), 4e-6, 1e-17);  // halfway into the pinion's relief
   EXPECT_DOUBLE_EQ(r.GapAt(g, g), 8e-6);
-  r.shape = ReliefShape::kParabolic;
+  r.pinion_shape = r.wheel_shape = ReliefShape::kParabolic;
   EXPECT_DOUBLE_EQ(r.GapAt(0.5e-3, g), 10e-6 * 0.75 * 0.75);
   EXPECT_NEAR(r.GapAt(9.5e-3, g), 8e-6 * 0.25, 1e-17);  // (s - (g - L)) / L rounds
+  // Each gear its own shape: a linear wheel relief with a parabolic pinion relief.
+  r.wheel_shape = ReliefShape::kLinear;
+  EXPECT_DOUBLE_EQ(r.GapAt(0.5e-3, g), 7.5e-6);
+  EXPECT_NEAR(r.GapAt(9.5e-3, g), 8e-6 * 0.25, 1e-17);
 }
 
 TEST(RelievedLoadShare, WithoutReliefItIsTheStiffnessShare) {
@@ -80,7 +84,7 @@ TEST(RelievedLoadShare, PairsInContactCarryTheWholeLoad) {
   const PairStiffnessFn k = [](double r1, double) { return 1.5e8 * (r1 / 0.04); };
   for (ReliefShape shape : {ReliefShape::kLinear, ReliefShape::kParabolic}) {
     TipRelief r;
-    r.shape = shape;
+    r.pinion_shape = r.wheel_shape = shape;
     r.pinion_amount_m = 12e-6;
     r.pinion_length_m = 0.6 * (path.length_m() - path.s_d_m());
     r.wheel_amount_m = 30e-6;  // lifts the pair near A off: its share is 0 there, not negative
