@@ -33,7 +33,7 @@ PATH_QUANTITIES = [("h_min", "h_min [um]", 1e6), ("h_c", "h_c [um]", 1e6),
                    ("mu", "mu [-]", 1.0)]
 SUMMARY = [("h_min_min", "min h_min [um]", 1e6), ("h_c_pitch", "h_c at C [um]", 1e6),
            ("p_max_max", "max p_max [GPa]", 1e-9), ("T_max_max", "max T_max [K]", 1.0),
-           ("mu_mean", "mean mu [-]", 1.0)]
+           ("mu_mean", "mean mu [-]", 1.0), ("T_surface_max", "max surface T [K]", 1.0)]
 
 
 def fail(message):
@@ -184,7 +184,8 @@ def main():
 
     # Summary quantities against each varied parameter.
     ok = np.array([s == "ok" for s in status])
-    quantities = [(k, yl, sc) for k, yl, sc in SUMMARY if np.any(f["summary"][k][:] != 0)]
+    quantities = [(k, yl, sc) for k, yl, sc in SUMMARY
+                  if k in f["summary"] and np.any(f["summary"][k][:] != 0)]
     for lab in labels:
         x = f["parameters"][lab][:]
         if not np.issubdtype(x.dtype, np.number):
