@@ -27,6 +27,23 @@ std::string Slurp(const fs::path& p) {
   return s.str();
 }
 
+// A numeric CSV: the header line and the rows as numbers.
+struct NumericCsv {
+  std::string header;
+  std::vector<std::vector<double>> rows;
+};
+NumericCsv ReadNumericCsv(const fs::path& p) {
+  NumericCsv t;
+  std::ifstream in(p);
+  std::getline(in, t.header);
+  for (std::string line; std::getline(in, line);) {
+    std::stringstream row(line);
+    t.rows.emplace_back();
+    for (std::string cell; std::getline(row, cell, ',');) t.rows.back().push_back(std::stod(cell));
+  }
+  return t;
+}
+
 class GearCommand : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -106,15 +123,10 @@ TEST_F(GearCommand, TipReliefCaseReportsTheReliefAndTheTransmissionError) {
   EXPECT_NE(r.out.find("static transmission error under F_bt:"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("mm before E (linear)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("loaded part of the path"), std::string::npos) << r.out;
-  std::ifstream in(csv);
-  std::string header, line;
-  std::getline(in, header);
-  ASSERT_NE(header.find(",ste_m"), std::string::npos) << header;
+  const NumericCsv t = ReadNumericCsv(csv);
+  ASSERT_NE(t.header.find(",ste_m"), std::string::npos) << t.header;
   int single = 0;
-  while (std::getline(in, line)) {
-    std::vector<double> v;
-    std::stringstream row(line);
-    for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
+  for (const std::vector<double>& v : t.rows) {
     ASSERT_EQ(v.size(), 18u);
     const double k_mesh = v[11], w = v[13], pairs = v[16], ste = v[17];
     if (pairs != 1) continue;
@@ -134,22 +146,17 @@ TEST_F(GearCommand, MuGivesBlokFlashTemperatureAlongThePath) {
       Tehl("gear cases/seed004_sae40.toml --mu 0.05 --points 21 --csv " + csv.string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("Flash temperature (Blok, mu = 0.05"), std::string::npos) << r.out;
-  std::ifstream in(csv);
-  std::string header, line;
-  std::getline(in, header);
-  ASSERT_NE(header.find(",ste_m,dT_flash_blok_k"), std::string::npos) << header;
+  const NumericCsv t = ReadNumericCsv(csv);
+  ASSERT_NE(t.header.find(",ste_m,dT_flash_blok_k"), std::string::npos) << t.header;
   const double e_prime = 117e9 / (1 - 0.34 * 0.34), e = std::sqrt(55.0 * 7890.0 * 375.0);
   int rows = 0;
-  while (std::getline(in, line)) {
-    std::vector<double> v;
-    std::stringstream row(line);
-    for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
+  for (const std::vector<double>& v : t.rows) {
     ASSERT_EQ(v.size(), 19u);
     const double radius = v[4], u1 = v[5], u2 = v[6], w = v[13], flash = v[18];
     const double b = std::sqrt(8 * w * radius / (M_PI * e_prime));
     const double expected = 0.785983 * 0.05 * w * std::abs(u1 - u2) /
                             (std::sqrt(b) * e * (std::sqrt(u1) + std::sqrt(u2)));
-    EXPECT_NEAR(flash, expected, 1e-5 * expected + 1e-12) << line;
+    EXPECT_NEAR(flash, expected, 1e-5 * expected + 1e-12) << "row " << rows;
     ++rows;
   }
   EXPECT_EQ(rows, 25);  // 21 samples + both sides of B and D
