@@ -1,10 +1,12 @@
 // Notes that `tehl run` adds to its report: the outlet pressure spike that the grid does not
-// resolve (include/tehl/ehl/outlet_spike.hpp) and the film lost to a truncated inlet
-// (include/tehl/ehl/inlet_truncation.hpp).
+// resolve (include/tehl/ehl/outlet_spike.hpp), the film lost to a truncated inlet
+// (include/tehl/ehl/inlet_truncation.hpp) and solids too slow for the high-speed surface
+// temperatures (docs/thermal.md "Open points").
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "run_tehl.hpp"
@@ -66,6 +68,42 @@ TEST(RunNotes, ALongInletGetsNoInletNote) {
   ASSERT_TRUE(r.exited);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_EQ(r.out.find("note: the inlet"), std::string::npos) << r.out;
+}
+
+// The seed 004 cycle (cases/seed004_sae40.toml, thermal, bronze) on 129 nodes and 6 steps,
+// `thermal` as given, writing into out_dir.
+std::string Seed004Case(bool thermal, const std::string& out_dir) {
+  std::ifstream in(std::string(TEHL_SOURCE_DIR) + "/cases/seed004_sae40.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto replace = [&](const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  replace("grid_points = 513", "grid_points = 129\nsteps = 6");
+  replace("thermal = true", thermal ? "thermal = true" : "thermal = false");
+  const std::string path = UniqueTempPath("seed004.toml");
+  std::ofstream(path) << text << "[output]\ndirectory = \"" << out_dir << "\"\n";
+  return path;
+}
+
+// Pe = u1 b / (2 kappa) of the pinion at A: u1 = 0.679 m/s (VALIDATION.md section 5: rho1 =
+// 6.486 mm at 1000 rpm), b = 71.5 um (Hertz at the pair's load 47.4 kN/m = 0.408 F_bt / b and
+// R = 5.608 mm, E' of the bronze), kappa = 55 / (7890 x 375) = 1.86e-5 m^2/s: 1.31, the
+// smallest of both gears along the path. An isothermal run has no surface temperatures and no
+// such note.
+TEST(RunNotes, ASlowSolidIsNotedInAThermalCycle) {
+  const RunResult r = RunTehl("run -q '" + Seed004Case(true, UniqueTempPath("out")) + "'");
+  ASSERT_TRUE(r.exited);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("note: the Peclet number u b / (2 kappa) of the pinion falls to 1.31 (at "
+                       "s = 0 mm)"),
+            std::string::npos)
+      << r.out;
+  const RunResult iso = RunTehl("run -q '" + Seed004Case(false, UniqueTempPath("out")) + "'");
+  ASSERT_TRUE(iso.exited);
+  ASSERT_EQ(iso.exit_code, 0) << iso.out << iso.err;
+  EXPECT_EQ(iso.out.find("Peclet"), std::string::npos) << iso.out;
 }
 
 }  // namespace
