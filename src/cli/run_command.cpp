@@ -62,6 +62,7 @@ constexpr double kHighPeclet = 5.0;
 
 void NoteCyclePeclet(const MeshCycleResult& r, size_t converged_steps) {
   if (!r.thermal || !r.elastic) return;
+  const bool blok_only = r.finite_peclet;  // the film's surfaces already conduct along x
   double lowest = std::numeric_limits<double>::infinity();
   size_t at = 0;
   const char* body = "pinion";
@@ -84,11 +85,21 @@ void NoteCyclePeclet(const MeshCycleResult& r, size_t converged_steps) {
     }
   }
   if (!(lowest < kHighPeclet)) return;
+  if (blok_only) {
+    std::printf(
+        "note: the Peclet number u b / (2 kappa) of the %s falls to %.3g (at s = %.4g mm), "
+        "below about %.0f: the film's surface temperatures include the conduction along the "
+        "surface (effects.finite_peclet), Blok's flash temperature does not and overstates the "
+        "rise there\n",
+        body, lowest, r.steps[at].s_m * 1e3, kHighPeclet);
+    return;
+  }
   std::printf(
       "note: the Peclet number u b / (2 kappa) of the %s falls to %.3g (at s = %.4g mm), below "
       "about %.0f: there the surface temperatures, which neglect conduction along the surface "
       "(the high-speed moving heat source of seed 004 eqs. 14-15, and Blok's estimate), "
-      "overstate the rise (docs/thermal.md \"Open points\")\n",
+      "overstate the rise; [effects] finite_peclet = true includes it (docs/thermal.md "
+      "\"Surface temperatures at any Peclet number\")\n",
       body, lowest, r.steps[at].s_m * 1e3, kHighPeclet);
 }
 

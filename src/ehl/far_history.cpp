@@ -29,36 +29,60 @@ struct FarHistory::Plans {
   }
 };
 
-FarHistory::FarHistory(const MovingHeatSource& source, int near_cells)
-    : n_(source.size()), near_(std::max(near_cells, 0)), source_(source) {
+FarHistory::FarHistory(const MovingHeatSource& source, int near_cells) : n_(source.size()) {
+  Reset(source, near_cells);
+}
+
+void FarHistory::Reset(const MovingHeatSource& source, int near_cells) {
+  if (source.size() != n_) throw std::invalid_argument("FarHistory::Reset: another grid size");
+  near_ = std::max(near_cells, 0);
+  source_ = source;
+  auto far = [&](int i, int k) { return i - k > near_ || i - k < 0; };
   inlet_.assign(n_, 0.0);
-  for (int i = near_ + 1; i < n_; ++i) inlet_[i] = source.Weight(i, 0);
-  if (empty()) return;
-  // Lags that occur for k >= 1: i - k in [near + 1, n - 2]. A circular convolution of length m
-  // reproduces the linear one at i < n when the wrapped lags (m + i - k >= m - n + 2 for k > i)
-  // miss the kernel's support (<= n - 2): m >= 2n - 3. Powers of two for FFTW.
-  m_ = 2;
-  while (m_ < 2 * n_ - 3) m_ *= 2;
-  const int mc = m_ / 2 + 1;
-  auto plans = std::make_unique<Plans>();
-  plans->real = static_cast<double*>(fftw_malloc(sizeof(double) * m_));
-  plans->spectrum = static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * mc));
-  if (!plans->real || !plans->spectrum) throw std::bad_alloc();
-  {
-    std::lock_guard<std::mutex> lock(FftwPlannerMutex());
-    plans->forward = fftw_plan_dft_r2c_1d(m_, plans->real, plans->spectrum, FFTW_ESTIMATE);
-    plans->backward = fftw_plan_dft_c2r_1d(m_, plans->spectrum, plans->real, FFTW_ESTIMATE);
+  outlet_.assign(n_, 0.0);
+  empty_ = true;
+  for (int i = 0; i < n_; ++i) {
+    if (far(i, 0)) inlet_[i] = source.Weight(i, 0);
+    if (n_ > 1 && far(i, n_ - 1)) outlet_[i] = source.Weight(i, n_ - 1);
+    empty_ = empty_ && inlet_[i] == 0 && outlet_[i] == 0;
   }
-  if (!plans->forward || !plans->backward) throw std::runtime_error("FFTW could not build a plan");
-  // Far kernel: G at lag l = Weight(l + 1, 1) for near < l <= n - 2, zero elsewhere.
-  std::fill(plans->real, plans->real + m_, 0.0);
-  for (int lag = near_ + 1; lag <= n_ - 2; ++lag) plans->real[lag] = source.Weight(lag + 1, 1);
-  fftw_execute(plans->forward);
+  // The interior cells 1 <= k <= n - 2 seen from the nodes 0 <= i <= n - 1: lags i - k in
+  // [-(n - 2), n - 2]. A circular convolution of length m reproduces the linear one when these
+  // 2n - 3 lags stay distinct modulo m: m >= 2n - 3. Powers of two for FFTW.
+  std::vector<double> kernel(2 * n_ - 1, 0.0);  // at n - 1 + lag
+  for (int lag = -(n_ - 2); lag <= n_ - 2; ++lag)
+    if (lag > near_ || lag < 0) {
+      const int k = lag >= 0 ? 1 : n_ - 2;  // an interior cell with i = k + lag on the grid
+      kernel[n_ - 1 + lag] = source.Weight(k + lag, k);
+      empty_ = empty_ && kernel[n_ - 1 + lag] == 0;
+    }
+  if (empty_) return;
+  if (!plans_) {
+    m_ = 2;
+    while (m_ < 2 * n_ - 3) m_ *= 2;
+    const int mc = m_ / 2 + 1;
+    auto plans = std::make_unique<Plans>();
+    plans->real = static_cast<double*>(fftw_malloc(sizeof(double) * m_));
+    plans->spectrum = static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * mc));
+    if (!plans->real || !plans->spectrum) throw std::bad_alloc();
+    {
+      std::lock_guard<std::mutex> lock(FftwPlannerMutex());
+      plans->forward = fftw_plan_dft_r2c_1d(m_, plans->real, plans->spectrum, FFTW_ESTIMATE);
+      plans->backward = fftw_plan_dft_c2r_1d(m_, plans->spectrum, plans->real, FFTW_ESTIMATE);
+    }
+    if (!plans->forward || !plans->backward)
+      throw std::runtime_error("FFTW could not build a plan");
+    plans_ = std::move(plans);
+  }
+  Plans& p = *plans_;
+  std::fill(p.real, p.real + m_, 0.0);
+  for (int lag = -(n_ - 2); lag <= n_ - 2; ++lag) p.real[(lag + m_) % m_] = kernel[n_ - 1 + lag];
+  fftw_execute(p.forward);
+  const int mc = m_ / 2 + 1;
   kernel_hat_.resize(mc);
   const double inv_m = 1.0 / m_;  // the backward transform is unnormalized
   for (int q = 0; q < mc; ++q)
-    kernel_hat_[q] = std::complex<double>(plans->spectrum[q][0], plans->spectrum[q][1]) * inv_m;
-  plans_ = std::move(plans);
+    kernel_hat_[q] = std::complex<double>(p.spectrum[q][0], p.spectrum[q][1]) * inv_m;
 }
 
 FarHistory::~FarHistory() = default;
@@ -69,9 +93,9 @@ void FarHistory::Apply(const double* s, int stride, double* y) const {
     return;
   }
   Plans& p = *plans_;
-  p.real[0] = 0.0;  // the inlet cell has its own weights, added below
-  for (int k = 1; k < n_; ++k) p.real[k] = s[static_cast<long>(k) * stride];
-  std::fill(p.real + n_, p.real + m_, 0.0);
+  // The end cells have their own weights, added below.
+  std::fill(p.real, p.real + m_, 0.0);
+  for (int k = 1; k < n_ - 1; ++k) p.real[k] = s[static_cast<long>(k) * stride];
   fftw_execute(p.forward);
   for (int q = 0; q < m_ / 2 + 1; ++q) {
     const std::complex<double> r =
@@ -80,17 +104,19 @@ void FarHistory::Apply(const double* s, int stride, double* y) const {
     p.spectrum[q][1] = r.imag();
   }
   fftw_execute(p.backward);
-  for (int i = 0; i < n_; ++i) y[i] = p.real[i] + inlet_[i] * s[0];
-  // Lags <= near are zero in the kernel; the round-off of the transforms is not: exact zeros
-  // where the far part is empty.
-  std::fill(y, y + std::min(near_ + 1, n_), 0.0);
+  const double s_last = s[static_cast<long>(n_ - 1) * stride];
+  for (int i = 0; i < n_; ++i) y[i] = p.real[i] + inlet_[i] * s[0] + outlet_[i] * s_last;
+  // In the high-Peclet form lags <= near are zero in the kernel; the round-off of the
+  // transforms is not: exact zeros where the far part is empty.
+  if (source_.high_peclet()) std::fill(y, y + std::min(near_ + 1, n_), 0.0);
 }
 
 void FarHistory::ApplyDirect(const double* s, int stride, double* y) const {
   for (int i = 0; i < n_; ++i) {
     double sum = 0;
-    for (int k = 0; k < i - near_; ++k)
-      sum += source_.Weight(i, k) * s[static_cast<long>(k) * stride];
+    for (int k = 0; k < n_; ++k)
+      if (i - k > near_ || i - k < 0)
+        sum += source_.Weight(i, k) * s[static_cast<long>(k) * stride];
     y[i] = sum;
   }
 }

@@ -54,6 +54,7 @@ std::string FilmEnergySolver::Summary::BriefReport() const {
   s << "energy: " << ToString(termination) << " after " << iterations << " iterations, max change "
     << max_change_k << " K, balance error " << balance.RelativeError() << ", mass defect "
     << mass_defect << ", " << wall_time_s * 1e3 << " ms";
+  if (krylov_iterations > 0) s << ", " << krylov_iterations << " GMRES iterations";
   if (!usable()) s << " (" << message << ")";
   return s.str();
 }
@@ -85,8 +86,7 @@ FilmEnergySolver::FilmEnergySolver(const UniformGrid& grid,
       solid1_(solid1),
       solid2_(solid2),
       t0_(inlet_temperature_k),
-      options_(options),
-      source_(grid) {
+      options_(options) {
   ProblemList bad;
   for (const auto& m : options.Validate()) bad.Add({"", 0, "FilmEnergySolver::Options", "", m, ""});
   if (!(std::isfinite(t0_) && t0_ > 0))
@@ -230,12 +230,17 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
   if (moving) {
     in.factor1 = MovingHeatSource::Factor(solid1_, flow.u1_m_s);
     in.factor2 = MovingHeatSource::Factor(solid2_, flow.u2_m_s);
+    if (options_.finite_peclet) {
+      in.omega1 = MovingHeatSource::DecayRate(solid1_, flow.u1_m_s);
+      in.omega2 = MovingHeatSource::DecayRate(solid2_, flow.u2_m_s);
+    }
   }
   if (!t->Matches(n, nz)) *t = Initial();
   if (!system_ || !options_.reuse_factorization)
-    system_ = std::make_unique<internal::FilmEnergySystem>(grid_, nz, source_,
-                                                           options_.history_near_cells);
+    system_ = std::make_unique<internal::FilmEnergySystem>(grid_, nz, options_.history_near_cells,
+                                                           options_.finite_peclet);
   internal::FilmEnergySystem& system = *system_;
+  const int krylov_before = system.krylov_iterations();
 
   // Lubricant properties: k(p) per column, rho(p, T) per node at the current iterate.
   Eigen::VectorXd p = flow.p_pa.cwiseMax(0.0), k(n);
@@ -250,6 +255,9 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
   double last_change = std::numeric_limits<double>::infinity();
   bool last_fresh_exact = false;  // the previous step had a fresh factorization of the full A
   int poor_after_exact = 0;       // poor steps right after one
+  // Finite Peclet: once a chord step was poor, the rest of the steps are Krylov steps (GMRES
+  // on the whole operator, upstream conduction included; FilmEnergySystem::Correction).
+  bool krylov = false;
   for (int it = 1; it <= options_.max_iterations; ++it) {
     bool linear = true;
     for (int i = 0; i < n; ++i)
@@ -272,7 +280,7 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
     // First the cheap factorization without the reverse-flow couplings (exact when there is
     // no reverse flow).
     if (!system.HasFactorization()) ok = factorize(false);
-    ok = ok && system.Correction(x, &delta);
+    ok = ok && system.Correction(x, krylov, &delta);
     double change = ok ? ChangeOfTemperatures(delta, n, nz) : 0.0;
     // A step that fails, or whose contraction r = change / last_change would need more than
     // max_chord_steps further steps to reach the tolerance, is redone with a fresh factorization
@@ -284,9 +292,12 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
       // Poor twice right after a factorization of the full sparse A: what converges slowly is
       // the far history lagged outside A (a solid strongly coupled to the film), so A takes
       // all of it from now on.
-      if (after_exact && system.lags_far_history() && ++poor_after_exact >= 2)
+      if (options_.finite_peclet && system.lags_far_history()) {
+        krylov = true;
+      } else if (after_exact && system.lags_far_history() && ++poor_after_exact >= 2) {
         system.KeepWholeHistory(in);
-      ok = factorize(true) && system.Correction(x, &delta);
+      }
+      ok = factorize(true) && system.Correction(x, krylov, &delta);
       if (ok) change = ChangeOfTemperatures(delta, n, nz);
       r = 0;
     }
@@ -311,6 +322,7 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
     }
     s.termination = Termination::kMaxIterations;
   }
+  s.krylov_iterations = system.krylov_iterations() - krylov_before;
   if (s.iterations > 0) {
     s.balance = system.Balance(in, *t);
     s.mass_defect = system.mass_defect();

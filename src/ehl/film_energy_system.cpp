@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
+#include "ehl/gmres.hpp"
 
 namespace tehl::internal {
 
@@ -24,15 +27,18 @@ struct FilmEnergySystem::Klu {
 
 FilmEnergySystem::FilmEnergySystem(const UniformGrid& grid,
                                    int nz,
-                                   const MovingHeatSource& source,
-                                   int near_cells)
+                                   int near_cells,
+                                   bool finite_peclet)
     : n_(grid.size()),
       nz_(nz),
       block_(nz + 2),
       dx_(grid.dx_m()),
       dxi_(1.0 / (nz - 1)),
-      source_(source),
-      far_(source, near_cells),
+      grid_(grid),
+      near_cells_(near_cells),
+      finite_peclet_(finite_peclet),
+      source_{MovingHeatSource(grid), MovingHeatSource(grid)},
+      far_{FarHistory(source_[0], near_cells), FarHistory(source_[1], near_cells)},
       far_y_(grid.size()),
       klu_(std::make_unique<Klu>()) {}
 
@@ -49,7 +55,7 @@ void FilmEnergySystem::ComputeMassFluxes(const FilmEnergyInputs& in,
   mass_.resize(n_, nz_);
   dmass_dt_.resize(n_, nz_);
   for (int i = 0; i < n_; ++i) {
-    const double dxc = source_.CellLength(i);
+    const double dxc = source_[0].CellLength(i);
     const double dhdt = f.dhdt_m_s.size() ? f.dhdt_m_s[i] : 0.0;
     const double dpdt = f.dpdt_pa_s.size() ? f.dpdt_pa_s[i] : 0.0;
     for (int j = 0; j < nz_; ++j) {
@@ -138,7 +144,7 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
     heat_ = f.heating_w_m3;
   }
   for (int i = 0; i < n_; ++i) {
-    const double dxc = source_.CellLength(i);
+    const double dxc = source_[0].CellLength(i);
     const double kappa = k_w_mk[i] * dxc / (f.h_m[i] * dxi_);  // conduction across the film
     // Conduction along x through the west and east faces, per unit of dxi [W/(m K)].
     const double kx_w =
@@ -259,7 +265,7 @@ bool FilmEnergySystem::Factorize(bool exact) {
   // would join one diagonal block, which the surface history would fill.
   const bool lag_conduction = moving_walls_;
   int dropped = 0, lagged = 0, zone_lagged = 0;
-  const int zone_band = far_.near_cells();
+  const int zone_band = near_cells_;
   for (int c = 0; c + 1 < static_cast<int>(col_ptr_.size()); ++c) {
     fact_ptr_[c] = static_cast<int>(fact_idx_.size());
     const int ci = c / block_;
@@ -317,24 +323,60 @@ bool FilmEnergySystem::Factorize(bool exact) {
   return k.numeric != nullptr;
 }
 
-bool FilmEnergySystem::Correction(const Eigen::VectorXd& x, Eigen::VectorXd* delta) const {
+bool FilmEnergySystem::Correction(const Eigen::VectorXd& x,
+                                  bool krylov,
+                                  Eigen::VectorXd* delta) const {
   Klu& k = *klu_;
   if (!k.numeric) return false;
-  *delta = Eigen::Map<const Eigen::VectorXd>(rhs_.data(), rhs_.size());
+  // The whole operator: A v and, outside A, the far history (surface rows T_s - T0 - F sum G q
+  // = 0, so A_whole v = A v - F/dx sum_far G s).
+  const bool far = lags_far_history();
+  auto apply_whole = [&](const Eigen::VectorXd& v, Eigen::VectorXd* out) {
+    out->setZero(v.size());
+    for (int c = 0; c + 1 < static_cast<int>(col_ptr_.size()); ++c)
+      for (int e = col_ptr_[c]; e < col_ptr_[c + 1]; ++e) (*out)[row_idx_[e]] += values_[e] * v[c];
+    if (far)
+      for (int s = 0; s < 2; ++s) {
+        far_[s].Apply(v.data() + nz_ + s, block_, far_y_.data());
+        const double f = (s == 0 ? built_factor1_ : built_factor2_) / dx_;
+        for (int i = 0; i < n_; ++i) (*out)[i * block_ + nz_ + s] -= f * far_y_[i];
+      }
+  };
+  auto solve_factorized = [&](Eigen::VectorXd* v) {
+    return klu_solve(k.symbolic, k.numeric, static_cast<int>(v->size()), 1, v->data(), &k.common) !=
+           0;
+  };
+  // The residual b - A_whole x.
+  Eigen::VectorXd residual = Eigen::Map<const Eigen::VectorXd>(rhs_.data(), rhs_.size());
   for (int c = 0; c + 1 < static_cast<int>(col_ptr_.size()); ++c)
-    for (int e = col_ptr_[c]; e < col_ptr_[c + 1]; ++e) (*delta)[row_idx_[e]] -= values_[e] * x[c];
-  // The far history, outside A: surface rows T_s - T0 - F sum G q = 0, so b - A x gains
-  // +F/dx sum_far G s.
-  if (lags_far_history())
+    for (int e = col_ptr_[c]; e < col_ptr_[c + 1]; ++e) residual[row_idx_[e]] -= values_[e] * x[c];
+  if (far)
     for (int s = 0; s < 2; ++s) {
-      far_.Apply(x.data() + nz_ + s, block_, far_y_.data());
+      far_[s].Apply(x.data() + nz_ + s, block_, far_y_.data());
       const double f = (s == 0 ? built_factor1_ : built_factor2_) / dx_;
-      for (int i = 0; i < n_; ++i) (*delta)[i * block_ + nz_ + s] += f * far_y_[i];
+      for (int i = 0; i < n_; ++i) residual[i * block_ + nz_ + s] += f * far_y_[i];
     }
-  if (!klu_solve(k.symbolic, k.numeric, static_cast<int>(delta->size()), 1, delta->data(),
-                 &k.common))
-    return false;
-  return delta->allFinite();
+  if (!(krylov && far)) {
+    // A chord step with the factorized matrix.
+    *delta = std::move(residual);
+    return solve_factorized(delta) && delta->allFinite();
+  }
+  // A Krylov step: GMRES on the whole operator, preconditioned by the factorization, to a
+  // loose relative residual (the outer iteration recomputes the residual). For finite Peclet
+  // numbers: the heat conducted ahead of each source (every upstream lag) stays out of the
+  // factorized matrix, and lagging it in chord steps contracts slowly or not at all when the
+  // solids are strongly coupled to the film (the upstream weights of a Peclet number near 1
+  // sum to many times the diagonal one).
+  bool ok = true;
+  auto precondition = [&](const Eigen::VectorXd& v, Eigen::VectorXd* out) {
+    *out = v;
+    ok = solve_factorized(out) && ok;
+  };
+  delta->setZero(residual.size());
+  const GmresResult g = Gmres(apply_whole, precondition, residual, delta, kKrylovRestart,
+                              kKrylovMaxIterations, kKrylovTolerance);
+  krylov_iterations_ += g.iterations;
+  return ok && delta->allFinite();
 }
 
 Eigen::VectorXd FilmEnergySystem::Pack(const FilmTemperature& t, double t0_k) const {
@@ -377,9 +419,10 @@ void FilmEnergySystem::BuildMatrix(const FilmEnergyInputs& in) {
     }
   signature.back() = in.fixed_walls;
   moving_walls_ = !in.fixed_walls;
-  const int near = lag_far_ ? far_.near_cells() : n_;
+  const int near = lag_far_ ? near_cells_ : n_;
   const bool in_place = !values_.empty() && signature == signature_ && near == built_near_ &&
-                        in.factor1 == built_factor1_ && in.factor2 == built_factor2_;
+                        in.factor1 == built_factor1_ && in.factor2 == built_factor2_ &&
+                        in.omega1 == built_omega1_ && in.omega2 == built_omega2_;
   const int size = n_ * block_;
   size_t cursor = 0;
   if (!in_place) {
@@ -387,8 +430,17 @@ void FilmEnergySystem::BuildMatrix(const FilmEnergyInputs& in) {
     row_idx_.clear();
     values_.clear();
     signature_ = signature;
+    // The kernels follow the speeds (finite Peclet), the far parts the near band.
+    if (near != built_near_ || in.omega1 != built_omega1_ || in.omega2 != built_omega2_)
+      for (int s = 0; s < 2; ++s) {
+        const double omega = s == 0 ? in.omega1 : in.omega2;
+        if (finite_peclet_ && omega > 0) source_[s] = MovingHeatSource(grid_, omega);
+        far_[s].Reset(source_[s], near);
+      }
     built_factor1_ = in.factor1;
     built_factor2_ = in.factor2;
+    built_omega1_ = in.omega1;
+    built_omega2_ = in.omega2;
     built_near_ = near;
   }
   auto put = [&](int row, double v) {
@@ -415,17 +467,18 @@ void FilmEnergySystem::BuildMatrix(const FilmEnergyInputs& in) {
     for (int s = 0; s < 2; ++s, ++col) {
       if (!in_place) col_ptr_[col] = static_cast<int>(row_idx_.size());
       const int wall_j = s == 0 ? 0 : nz_ - 1;
-      put(base + wall_j, source_.CellLength(i) / dx_);  // the wall cell loses q dx_cell
+      put(base + wall_j, source_[0].CellLength(i) / dx_);  // the wall cell loses q dx_cell
       if (in.fixed_walls) continue;
       if (in_place) {  // the surface weights are unchanged
         cursor = col_ptr_[col + 1];
         continue;
       }
       const double factor = s == 0 ? in.factor1 : in.factor2;
-      // The near band only; T_s(x_0) = T0: no weight at i' = 0.
+      // The near band only; high Peclet: T_s(x_0) = T0, no weight at i' = 0.
+      const MovingHeatSource& src = source_[s];
       const int last = std::min(n_ - 1, i + near);
-      for (int ii = std::max(i, 1); ii <= last; ++ii)
-        put(ii * block_ + nz_ + s, -factor * source_.Weight(ii, i) / dx_);
+      for (int ii = src.high_peclet() ? std::max(i, 1) : i; ii <= last; ++ii)
+        put(ii * block_ + nz_ + s, -factor * src.Weight(ii, i) / dx_);
     }
   }
   if (!in_place) col_ptr_[size] = static_cast<int>(row_idx_.size());
@@ -453,8 +506,8 @@ EnergyBalance FilmEnergySystem::Balance(const FilmEnergyInputs& in,
     if (fx_(0, j) < 0) e.convected_out_w_m -= cp * fx_(0, j) * (t(0, j) - t0);
   }
   for (int i = 0; i < n_; ++i) {
-    e.into_solid1_w_m += ft.q1_w_m2[i] * source_.CellLength(i);
-    e.into_solid2_w_m += ft.q2_w_m2[i] * source_.CellLength(i);
+    e.into_solid1_w_m += ft.q1_w_m2[i] * source_[0].CellLength(i);
+    e.into_solid2_w_m += ft.q2_w_m2[i] * source_[0].CellLength(i);
   }
   return e;
 }

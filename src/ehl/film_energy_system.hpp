@@ -25,6 +25,8 @@ struct FilmEnergyInputs {
   double t0_k = 0;                                // inlet temperature [K]
   bool fixed_walls = false;                       // T1 = T2 = T0
   double factor1 = 0, factor2 = 0;                // 1/sqrt(pi rho c k u) of solids 1, 2
+  // u/(2 kappa) of solids 1, 2 with finite-Peclet surface temperatures, else 0 [1/m]
+  double omega1 = 0, omega2 = 0;
 };
 
 // Unknown / equation layout: column block i = [theta_i0 .. theta_i(nz-1), s1_i, s2_i], with
@@ -33,8 +35,10 @@ struct FilmEnergyInputs {
 class FilmEnergySystem {
  public:
   // near_cells: the lags of the moving-heat-source history kept in A (0 <= i - k <= near_cells);
-  // the rest enters the residual by FFT and is lagged by the factorization.
-  FilmEnergySystem(const UniformGrid& grid, int nz, const MovingHeatSource& source, int near_cells);
+  // the rest enters the residual by FFT and is lagged by the factorization. finite_peclet:
+  // Jaeger's kernel (FilmEnergyInputs::omega1, omega2), whose upstream lags i - k < 0 are
+  // always lagged (they would join every column into one diagonal block of KLU).
+  FilmEnergySystem(const UniformGrid& grid, int nz, int near_cells, bool finite_peclet);
   ~FilmEnergySystem();
 
   // Assembles A and b with the properties evaluated at t_iter (n x nz): rho, drho/dT,
@@ -62,19 +66,23 @@ class FilmEnergySystem {
   bool lags_couplings() const { return lags_couplings_; }
   // Whether A (assembled) leaves a far history out: then even a factorization of the full A
   // is a chord step, and a step is exact only when this is false.
-  bool lags_far_history() const { return moving_walls_ && lag_far_ && !far_.empty(); }
+  bool lags_far_history() const { return moving_walls_ && (!far_[0].empty() || !far_[1].empty()); }
   // From now on the whole history in A (none lagged): for a solid so strongly coupled to the
   // film that the lagged far part converges slowly. Rebuilds the assembled matrix for `in`.
   void KeepWholeHistory(const FilmEnergyInputs& in);
-  // delta = A_f^-1 (b - A x) with A_f the last factorized matrix. False if KLU fails or delta
-  // is not finite.
-  bool Correction(const Eigen::VectorXd& x, Eigen::VectorXd* delta) const;
+  // delta = A_f^-1 (b - A x) with A_f the last factorized matrix (a chord step), or with
+  // krylov (and a far history outside A) the solution of A_whole delta = b - A_whole x by
+  // GMRES preconditioned with A_f, to a relative residual kKrylovTolerance. False if KLU fails
+  // or delta is not finite.
+  bool Correction(const Eigen::VectorXd& x, bool krylov, Eigen::VectorXd* delta) const;
   // x = [theta, s] of a temperature field and back.
   Eigen::VectorXd Pack(const FilmTemperature& t, double t0_k) const;
   void Unpack(const Eigen::VectorXd& x, double t0_k, FilmTemperature* t) const;
   // The energy budget of the assembled system at the temperatures t.
   EnergyBalance Balance(const FilmEnergyInputs& in, const FilmTemperature& t) const;
   double mass_defect() const { return mass_defect_; }
+  // GMRES iterations of the finite-Peclet steps so far [-].
+  int krylov_iterations() const { return krylov_iterations_; }
 
  private:
   struct Klu;
@@ -87,8 +95,11 @@ class FilmEnergySystem {
 
   int n_, nz_, block_;
   double dx_, dxi_;
-  MovingHeatSource source_;
-  FarHistory far_;
+  UniformGrid grid_;
+  int near_cells_;
+  bool finite_peclet_;
+  MovingHeatSource source_[2];         // the kernels of solids 1 and 2
+  FarHistory far_[2];                  // their far parts (as built into the matrix)
   mutable std::vector<double> far_y_;  // work array of the far history [m^(1/2) m]
   bool moving_walls_ = false;
   bool lag_far_ = true;  // false after KeepWholeHistory
@@ -98,6 +109,10 @@ class FilmEnergySystem {
   std::vector<double> kx_face_;
   double cp_ = 0;
   static constexpr double kZonePeclet = 10.0;  // [-]
+  // GMRES of the finite-Peclet steps: restart, iteration budget [-], relative residual [-].
+  static constexpr int kKrylovRestart = 30, kKrylovMaxIterations = 150;
+  static constexpr double kKrylovTolerance = 3e-2;
+  mutable int krylov_iterations_ = 0;
   int built_near_ = -1;  // the near band of the built matrix [cells]
   // Per cell (n x nz): volume, mass, dM/dt, x-face mass flux on the west face (n+1 rows:
   // row i = face i - 1/2), cross-film flux through the north face (from j to j+1).
@@ -110,7 +125,7 @@ class FilmEnergySystem {
   std::vector<int> col_ptr_, row_idx_;
   std::vector<double> values_, rhs_;
   std::vector<char> signature_;  // upwind pattern and wall model of the built matrix
-  double built_factor1_ = 0, built_factor2_ = 0;
+  double built_factor1_ = 0, built_factor2_ = 0, built_omega1_ = 0, built_omega2_ = 0;
   std::vector<int> fact_ptr_, fact_idx_;  // the factorized matrix (A or an approximation)
   std::vector<double> fact_val_;
   bool factorized_exact_ = false;

@@ -47,6 +47,7 @@ void FilmField::Energy(double t0_k) {
   if (energy_ && energy_->inlet_temperature_k() == t0_k) return;
   FilmEnergySolver::Options o;
   o.film_nodes = nz_;
+  o.finite_peclet = eff_.finite_peclet;
   energy_ = std::make_unique<FilmEnergySolver>(grid_, lub_, solids_.body1, solids_.body2, t0_k, o);
 }
 

@@ -52,6 +52,7 @@ std::string FilmEffects::ToString() const {
   add(roughness, "roughness");
   add(thermal, "thermal");
   add(non_newtonian, "non_newtonian");
+  add(finite_peclet, "finite_peclet");
   return s.empty() ? "rigid isoviscous incompressible steady" : s;
 }
 

@@ -1,10 +1,12 @@
 // Exact cell weights of the moving-heat-source integral (include/tehl/ehl/surface_temperature.hpp).
 #include "tehl/ehl/surface_temperature.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "base/schema.hpp"
+#include "tehl/ehl/moving_line_source.hpp"
 #include "tehl/error.hpp"
 
 namespace tehl {
@@ -21,19 +23,57 @@ double TwoRootDifference(double a, double b) {
 }  // namespace
 
 MovingHeatSource::MovingHeatSource(const UniformGrid& grid)
-    : n_(grid.size()), dx_(grid.dx_m()), toeplitz_(grid.size()), inlet_(grid.size()) {
+    : n_(grid.size()),
+      dx_(grid.dx_m()),
+      toeplitz_(2 * grid.size() - 1, 0.0),
+      inlet_(grid.size()),
+      outlet_(grid.size(), 0.0) {
   // Cell k >= 1 seen from node i = k + m: [x_i - (m + 1/2) dx, x_i - (m - 1/2) dx], clipped at
   // x_i for m = 0 (the integral stops at x_i).
-  toeplitz_[0] = TwoRootDifference(0.5 * dx_, 0.0);
-  for (int m = 1; m < n_; ++m) toeplitz_[m] = TwoRootDifference((m + 0.5) * dx_, (m - 0.5) * dx_);
+  double* lag = toeplitz_.data() + (n_ - 1);
+  lag[0] = TwoRootDifference(0.5 * dx_, 0.0);
+  for (int m = 1; m < n_; ++m) lag[m] = TwoRootDifference((m + 0.5) * dx_, (m - 0.5) * dx_);
   // The inlet half cell [x_0, x_0 + dx/2] seen from node i: nothing at i = 0.
   inlet_[0] = 0.0;
   for (int i = 1; i < n_; ++i) inlet_[i] = TwoRootDifference(i * dx_, (i - 0.5) * dx_);
+  // The outlet half cell [x_(n-1) - dx/2, x_(n-1)] is seen from its own node only.
+  outlet_[n_ - 1] = lag[0];
+}
+
+MovingHeatSource::MovingHeatSource(const UniformGrid& grid, double omega_1_m)
+    : n_(grid.size()),
+      dx_(grid.dx_m()),
+      omega_(omega_1_m),
+      toeplitz_(2 * grid.size() - 1),
+      inlet_(grid.size()),
+      outlet_(grid.size()) {
+  if (!(std::isfinite(omega_1_m) && omega_1_m > 0))
+    throw InputError(InputProblem{"", 0, "omega_1_m", internal::FormatReal(omega_1_m),
+                                  "must be finite and > 0",
+                                  "u_s / (2 kappa_s) > 0 [1/m] (MovingHeatSource::DecayRate)"});
+  // Primitive of the kernel: P(X) = sqrt(2/(pi omega)) J(omega X), P(0) = 0; the weight of the
+  // cell [a, b] seen from x_i is P(x_i - a) - P(x_i - b).
+  const double scale = std::sqrt(2.0 / (M_PI * omega_));
+  auto primitive = [&](double half_cells) {
+    return scale * MovingLineSourceIntegral(omega_ * 0.5 * dx_ * half_cells);
+  };
+  // In half cells: an interior cell at lag l spans X in [(2l - 1), (2l + 1)] dx/2.
+  std::vector<double> p(4 * n_ + 1);  // P at X = (j - 2n) dx/2, j = 0 ... 4n
+  for (int j = 0; j <= 4 * n_; ++j) p[j] = primitive(j - 2.0 * n_);
+  auto at = [&](int half_cells) { return p[half_cells + 2 * n_]; };
+  for (int l = -(n_ - 1); l <= n_ - 1; ++l) toeplitz_[n_ - 1 + l] = at(2 * l + 1) - at(2 * l - 1);
+  for (int i = 0; i < n_; ++i) {
+    inlet_[i] = at(2 * i) - at(2 * i - 1);   // [x_0, x_0 + dx/2]
+    const int l = i - (n_ - 1);              // <= 0
+    outlet_[i] = at(2 * l + 1) - at(2 * l);  // [x_(n-1) - dx/2, x_(n-1)]
+  }
 }
 
 double MovingHeatSource::Weight(int i, int k) const {
-  if (k > i || i < 0 || k < 0 || i >= n_) return 0.0;
-  return k == 0 ? inlet_[i] : toeplitz_[i - k];
+  if (i < 0 || k < 0 || i >= n_ || k >= n_) return 0.0;
+  if (k == 0) return inlet_[i];
+  if (k == n_ - 1) return outlet_[i];
+  return toeplitz_[n_ - 1 + i - k];
 }
 
 double MovingHeatSource::CellLength(int k) const {
@@ -58,6 +98,11 @@ double MovingHeatSource::Factor(const SolidThermal& s, double speed_m_s) {
                          speed_m_s);
 }
 
+double MovingHeatSource::DecayRate(const SolidThermal& s, double speed_m_s) {
+  Factor(s, speed_m_s);  // the same checks
+  return 0.5 * speed_m_s * s.density_kg_m3 * s.heat_capacity_j_kgk / s.conductivity_w_mk;
+}
+
 Eigen::VectorXd MovingHeatSource::Rise(const SolidThermal& solid,
                                        double speed_m_s,
                                        const Eigen::VectorXd& q_w_m2) const {
@@ -67,9 +112,11 @@ Eigen::VectorXd MovingHeatSource::Rise(const SolidThermal& solid,
                                   "must have one value per grid node",
                                   std::to_string(n_) + " values"});
   Eigen::VectorXd rise = Eigen::VectorXd::Zero(n_);
-  for (int i = 1; i < n_; ++i) {
-    double sum = inlet_[i] * q_w_m2[0];
-    for (int k = 1; k <= i; ++k) sum += toeplitz_[i - k] * q_w_m2[k];
+  const int last = n_ - 1;
+  for (int i = 0; i < n_; ++i) {
+    double sum = inlet_[i] * q_w_m2[0] + (last > 0 ? outlet_[i] * q_w_m2[last] : 0.0);
+    const int k_end = high_peclet() ? std::min(i, last - 1) : last - 1;
+    for (int k = 1; k <= k_end; ++k) sum += toeplitz_[last + i - k] * q_w_m2[k];
     rise[i] = f * sum;
   }
   return rise;

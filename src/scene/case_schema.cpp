@@ -121,16 +121,23 @@ SectionSpec SurfaceSection(const std::string& name, const std::string& what) {
 }
 
 SectionSpec EffectsSection() {
-  return {"effects", "which physics a run includes; an effect that is off costs nothing", false, {
-    Flag("elastic", "true", "elastic deflection of the surfaces (DC-FFT)"),
-    Flag("piezoviscous", "true", "viscosity rises with pressure"),
-    Flag("compressible", "true", "density follows Dowson-Higginson"),
-    Flag("transient", "true", "squeeze term d(rho h)/dt between steps"),
-    Flag("thermal", "false", "energy equation across the film and surface temperatures"),
-    Flag("roughness", "false", "moving surface roughness of [surfaces]"),
-    Flag("dynamic_load", "false", "tooth load from the torsional dynamics"),
-    Flag("non_newtonian", "false", "Ree-Eyring shear thinning (parameters in the lubricant)"),
-  }};
+  return {
+      "effects",
+      "which physics a run includes; an effect that is off costs nothing",
+      false,
+      {
+          Flag("elastic", "true", "elastic deflection of the surfaces (DC-FFT)"),
+          Flag("piezoviscous", "true", "viscosity rises with pressure"),
+          Flag("compressible", "true", "density follows Dowson-Higginson"),
+          Flag("transient", "true", "squeeze term d(rho h)/dt between steps"),
+          Flag("thermal", "false", "energy equation across the film and surface temperatures"),
+          Flag("roughness", "false", "moving surface roughness of [surfaces]"),
+          Flag("dynamic_load", "false", "tooth load from the torsional dynamics"),
+          Flag("non_newtonian", "false", "Ree-Eyring shear thinning (parameters in the lubricant)"),
+          Flag("finite_peclet", "false",
+               "surface temperatures with heat conducted along the solids (Jaeger's moving line "
+               "source at any Peclet number; needs thermal)"),
+      }};
 }
 
 SectionSpec NumericsSection() {

@@ -86,6 +86,10 @@ FilmCase ReadFilmCase(Document& doc) {
   f.effects.roughness = doc.Bool("effects", "roughness");
   f.effects.thermal = doc.Bool("effects", "thermal");
   f.effects.non_newtonian = doc.Bool("effects", "non_newtonian");
+  f.effects.finite_peclet = doc.Bool("effects", "finite_peclet");
+  if (f.effects.finite_peclet && !f.effects.thermal)
+    doc.Problem("effects", "finite_peclet", "surface temperatures need the energy equation",
+                "finite_peclet = false, or thermal = true");
   if (doc.Bool("effects", "dynamic_load") && !doc.HasSection("gear"))
     doc.Problem("effects", "dynamic_load", "the dynamic tooth load needs a [gear] pair",
                 "dynamic_load = false for a [contact] case");

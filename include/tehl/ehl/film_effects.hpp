@@ -15,6 +15,9 @@ struct FilmEffects {
   bool thermal = false;      // energy equation across the film, surface temperatures, eta(T),
                              // rho(T) and the generalized Reynolds equation
   bool non_newtonian = false;  // Ree-Eyring shear thinning (needs the lubricant's Eyring data)
+  bool finite_peclet = false;  // surface temperatures with conduction along the solids
+                               // (Jaeger's moving line source at any Peclet number; with
+                               // thermal only)
   std::string ToString() const;  // e.g. "elastic piezoviscous compressible transient"
 };
 

@@ -7,6 +7,7 @@
 //       = eta (du/dz)^2 - (T/rho)(d rho/dT)(dp/dt + u dp/dx)                       (eq. 9)
 //   T(x, z = 0) = T1(x),  T(x, z = h) = T2(x)                        (film and solid touch)
 //   T_s(x) = T0 + 1/sqrt(pi rho_s c_s k_s u_s) int_{x_0}^{x} q_s(x')/sqrt(x - x') dx'  (14-15)
+//            (or Jaeger's finite-Peclet kernel over the whole grid: Options::finite_peclet)
 //   q_1 = +k dT/dz at z = 0, q_2 = -k dT/dz at z = h   (heat flux from the film into solid s)
 //   T = T0 where fluid enters the grid (at x_0 when u > 0, at x_{n-1} when u < 0).
 //
@@ -122,6 +123,11 @@ class FilmEnergySolver {
     // Lags i - k <= this of the surface-temperature history kept in the factorized matrix, the
     // rest applied by FFT and lagged (all of it in the matrix if that converges slowly) [cells].
     int history_near_cells = 4;                 // >= 0 [-]
+    // Surface temperatures from Jaeger's moving line source at the solids' own Peclet numbers
+    // (include/tehl/ehl/surface_temperature.hpp; effect `finite_peclet`) instead of the
+    // high-Peclet form of eqs. (14)-(15). The heat a solid conducts ahead of the film's
+    // sources is lagged by the iteration (applied by FFT), like the far history.
+    bool finite_peclet = false;
     int max_chord_steps = 3;                    // >= 1 [-]
     std::vector<std::string> Validate() const;  // every violated rule; empty = valid
   };
@@ -131,6 +137,7 @@ class FilmEnergySolver {
     std::string message = "Solve() was not called.";
     int iterations = 0;        // linear solves (Picard / chord steps) [-]
     int factorizations = 0;    // KLU numeric factorizations among them [-]
+    int krylov_iterations = 0;  // GMRES iterations of the finite-Peclet steps [-]
     double max_change_k = -1;  // max |T| change of the last iteration (0 for a linear problem) [K]
     double mass_defect = 0;    // largest face-flux correction to continuity / mass flow [-]
     EnergyBalance balance;
@@ -183,7 +190,6 @@ class FilmEnergySolver {
   SolidThermal solid1_, solid2_;
   double t0_;
   Options options_;
-  MovingHeatSource source_;
   mutable std::unique_ptr<internal::FilmEnergySystem> system_;  // kept factorization
 };
 

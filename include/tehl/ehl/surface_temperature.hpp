@@ -19,6 +19,16 @@
 //   G_ik = 2 [ sqrt(x_i - a_k) - sqrt(x_i - min(b_k, x_i)) ]   for the cell [a_k, b_k].
 // G is lower triangular and Toeplitz apart from the inlet half cell; it depends only on the
 // grid, so it is computed once and F carries the solid and its speed.
+//
+// Finite Peclet number (effect `finite_peclet`): the solid also conducts along its surface,
+// ahead of the heat and behind it. The kernel 1/sqrt(x - x') becomes Jaeger's steady moving
+// line source (include/tehl/ehl/moving_line_source.hpp), in the same normalization
+//   g(X) = sqrt(u_s/(pi kappa_s)) e^(omega X) K0(omega |X|),  omega = u_s/(2 kappa_s),
+// kappa_s = k_s/(rho_s c_s), g(X) -> 1/sqrt(X) for omega X -> inf; so T_s - T0 = F sum G q
+// as before, with G_ik the exact integral of g(x_i - x') over cell k (primitive
+// sqrt(2/(pi omega)) J(omega X)). G is then full (the surface warms upstream of a source
+// too, over a length of about 1/omega), Toeplitz apart from the half cells at both ends, and
+// depends on the solid and its speed through omega. Heat still enters only on the grid.
 #pragma once
 
 #include <Eigen/Core>
@@ -39,16 +49,28 @@ struct SolidThermal {
 class MovingHeatSource {
  public:
   MovingHeatSource() = default;
+  // The high-Peclet form of seed 004 eqs. (14)-(15).
   explicit MovingHeatSource(const UniformGrid& grid);
+  // Jaeger's kernel at the decay rate omega = u_s/(2 kappa_s) [1/m] (DecayRate); throws
+  // InputError unless omega is finite and > 0.
+  MovingHeatSource(const UniformGrid& grid, double omega_1_m);
 
   int size() const { return n_; }
-  // G_ik [m^(1/2)]: the exact integral of 1/sqrt(x_i - x') over cell k up to x_i; 0 for k > i.
+  bool high_peclet() const { return omega_ == 0; }
+  double omega_1_m() const { return omega_; }  // 0 for the high-Peclet form [1/m]
+  // G_ik [m^(1/2)]: the exact integral of the kernel over cell k seen from node i; in the
+  // high-Peclet form only up to x_i (0 for k > i).
   double Weight(int i, int k) const;
   // F = 1/sqrt(pi rho_s c_s k_s u_s) [K m^(3/2) / W]. Throws InputError unless the solid's
   // properties and u_s are finite and > 0.
   static double Factor(const SolidThermal& solid, double speed_m_s);
+  // omega = u_s rho_s c_s / (2 k_s) [1/m], the inverse of the length over which the surface
+  // conducts heat ahead of a source (u_s b / (2 kappa_s) = omega b is the Peclet number of a
+  // contact of half-width b). Throws InputError as Factor.
+  static double DecayRate(const SolidThermal& solid, double speed_m_s);
   // T_s(x_i) - T0 at every node for the flux q_w_m2 [W/m^2] at the nodes (size n) [K].
-  // O(n^2). Throws InputError as Factor, or if q has the wrong size.
+  // O(n^2). In the finite-Peclet form speed_m_s must be the speed omega was made for. Throws
+  // InputError as Factor, or if q has the wrong size.
   Eigen::VectorXd Rise(const SolidThermal& solid,
                        double speed_m_s,
                        const Eigen::VectorXd& q_w_m2) const;
@@ -58,8 +80,12 @@ class MovingHeatSource {
  private:
   int n_ = 0;
   double dx_ = 0;
-  std::vector<double> toeplitz_;  // G_ik for 1 <= k <= i as a function of i - k [m^(1/2)]
-  std::vector<double> inlet_;     // G_i0 for the inlet half cell [m^(1/2)]
+  double omega_ = 0;  // 0: high-Peclet form [1/m]
+  // G_ik of the interior cells 1 <= k <= n - 2 as a function of the lag i - k, stored at
+  // n - 1 + i - k (lags -(n-1) ... n-1; zero below 0 in the high-Peclet form) [m^(1/2)].
+  std::vector<double> toeplitz_;
+  std::vector<double> inlet_;   // G_i0 for the inlet half cell [m^(1/2)]
+  std::vector<double> outlet_;  // G_i(n-1) for the outlet half cell [m^(1/2)]
 };
 
 }  // namespace tehl

@@ -71,8 +71,8 @@ TEST(RunNotes, ALongInletGetsNoInletNote) {
 }
 
 // The seed 004 cycle (cases/seed004_sae40.toml, thermal, bronze) on 129 nodes and 6 steps,
-// `thermal` as given, writing into out_dir.
-std::string Seed004Case(bool thermal, const std::string& out_dir) {
+// `thermal` (and `finite_peclet`) as given, writing into out_dir.
+std::string Seed004Case(bool thermal, const std::string& out_dir, bool finite_peclet = false) {
   std::ifstream in(std::string(TEHL_SOURCE_DIR) + "/cases/seed004_sae40.toml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   auto replace = [&](const std::string& from, const std::string& to) {
@@ -81,7 +81,9 @@ std::string Seed004Case(bool thermal, const std::string& out_dir) {
     text.replace(at, from.size(), to);
   };
   replace("grid_points = 513", "grid_points = 129\nsteps = 6");
-  replace("thermal = true", thermal ? "thermal = true" : "thermal = false");
+  replace("thermal = true",
+          thermal ? (finite_peclet ? "thermal = true\nfinite_peclet = true" : "thermal = true")
+                  : "thermal = false");
   const std::string path = UniqueTempPath("seed004.toml");
   std::ofstream(path) << text << "[output]\ndirectory = \"" << out_dir << "\"\n";
   return path;
@@ -104,6 +106,20 @@ TEST(RunNotes, ASlowSolidIsNotedInAThermalCycle) {
   ASSERT_TRUE(iso.exited);
   ASSERT_EQ(iso.exit_code, 0) << iso.out << iso.err;
   EXPECT_EQ(iso.out.find("Peclet"), std::string::npos) << iso.out;
+  EXPECT_NE(r.out.find("finite_peclet = true includes it"), std::string::npos) << r.out;
+}
+
+// With effects.finite_peclet the film's surfaces conduct along x; only Blok's estimate is left
+// with the high-speed form, and the note says so.
+TEST(RunNotes, FinitePecletSurfacesLeaveOnlyBlokInTheNote) {
+  const RunResult r = RunTehl("run -q '" + Seed004Case(true, UniqueTempPath("out"), true) + "'");
+  ASSERT_TRUE(r.exited);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("of the pinion falls to 1.31"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("include the conduction along the surface (effects.finite_peclet), "
+                       "Blok's flash temperature does not"),
+            std::string::npos)
+      << r.out;
 }
 
 }  // namespace

@@ -74,5 +74,60 @@ TEST(FarHistory, NearBandPlusFarPartIsTheWholeHistory) {
   }
 }
 
+// The finite-Peclet kernel (Jaeger's moving line source): the far part now also holds every
+// upstream lag i - k < 0 and the outlet half cell's own weights. Same references as above; the
+// kernels are set by Reset on one object, as the energy system does when the speed changes.
+TEST(FarHistory, FinitePecletFftEqualsTheDirectSumToRoundOff) {
+  for (int n : {5, 17, 257, 1000}) {
+    const UniformGrid grid(-3e-4, 1e-4, n);
+    FarHistory far(MovingHeatSource(grid), 0);
+    for (double omega_b : {0.3, 3.0, 300.0}) {  // Peclet numbers of a contact with b = 1e-4 m
+      const MovingHeatSource source(grid, omega_b / 1e-4);
+      for (int near : {0, 4, n - 1}) {
+        far.Reset(source, near);
+        // Empty only without downstream far lags and when even the next cell ahead is out of
+        // reach: its weight, about e^(-omega dx) of the lag-0 one, vanishes against 1 (the
+        // weights are differences of J near -1).
+        EXPECT_EQ(far.empty(), near >= n - 1 && source.omega_1_m() * grid.dx_m() > 40)
+            << "n " << n << ", omega b " << omega_b << ", near " << near;
+        const std::vector<double> s = Samples(n, 3, 31u * n + near);
+        std::vector<double> fft(n, 1.0), direct(n, 1.0);
+        far.Apply(s.data(), 3, fft.data());
+        far.ApplyDirect(s.data(), 3, direct.data());
+        double scale = 0, err = 0;
+        for (int i = 0; i < n; ++i) {
+          scale = std::max(scale, std::abs(direct[i]));
+          err = std::max(err, std::abs(fft[i] - direct[i]));
+        }
+        EXPECT_LE(err, 1e-12 * scale) << "n " << n << ", omega b " << omega_b << ", near " << near;
+      }
+    }
+  }
+}
+
+TEST(FarHistory, FinitePecletNearBandPlusFarPartIsTheWholeHistory) {
+  const int n = 300, near = 7;
+  const UniformGrid grid(-3e-4, 1e-4, n);
+  const double speed = 2.0;
+  const MovingHeatSource source(grid, MovingHeatSource::DecayRate(kBronze, speed));
+  const std::vector<double> q = Samples(n, 1, 9u);
+  const Eigen::VectorXd qv = Eigen::Map<const Eigen::VectorXd>(q.data(), n);
+  const Eigen::VectorXd whole =
+      source.Rise(kBronze, speed, qv) / MovingHeatSource::Factor(kBronze, speed);
+  const FarHistory far(source, near);
+  std::vector<double> y(n);
+  far.Apply(q.data(), 1, y.data());
+  const double scale = whole.cwiseAbs().maxCoeff();
+  double upstream = 0;  // the largest share of a node's history from lags i - k < 0
+  for (int i = 0; i < n; ++i) {
+    double sum = y[i], ahead = 0;
+    for (int k = std::max(0, i - near); k <= i; ++k) sum += source.Weight(i, k) * q[k];
+    for (int k = i + 1; k < n; ++k) ahead += source.Weight(i, k) * std::abs(q[k]);
+    upstream = std::max(upstream, ahead / scale);
+    EXPECT_NEAR(sum, whole[i], 1e-12 * scale) << i;
+  }
+  EXPECT_GT(upstream, 1e-3);  // omega b = 0.8 for b = 1e-4 m: the heat ahead is not small
+}
+
 }  // namespace
 }  // namespace tehl::internal
