@@ -255,8 +255,8 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
   double last_change = std::numeric_limits<double>::infinity();
   bool last_fresh_exact = false;  // the previous step had a fresh factorization of the full A
   int poor_after_exact = 0;       // poor steps right after one
-  // Finite Peclet: once a chord step was poor, the rest of the steps are Krylov steps (GMRES
-  // on the whole operator, upstream conduction included; FilmEnergySystem::Correction).
+  // Once the lagged history stalls the chord steps (below), the rest of the steps are Krylov
+  // steps: GMRES on the whole operator (FilmEnergySystem::Correction).
   bool krylov = false;
   for (int it = 1; it <= options_.max_iterations; ++it) {
     bool linear = true;
@@ -289,14 +289,15 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
     const bool poor =
         !ok || r >= 1 || ChordStepsToGo(change, r, tolerance_k) > options_.max_chord_steps;
     if (poor && !(fresh && system.factorized_exact())) {
-      // Poor twice right after a factorization of the full sparse A: what converges slowly is
-      // the far history lagged outside A (a solid strongly coupled to the film), so A takes
-      // all of it from now on.
-      if (options_.finite_peclet && system.lags_far_history()) {
+      // Poor twice right after a factorization of the full sparse A (at once with finite
+      // Peclet numbers, whose upstream history is lagged too): what converges slowly is the
+      // history lagged outside A (a solid strongly coupled to the film), so the rest of the
+      // steps solve with it, by GMRES preconditioned with the factorization. Taking the whole
+      // history into A instead, as before, made KLU's factors dense triangles: the 1025-node
+      // seed 004 cycle took 19.9 s instead of 9.0 s (docs/performance.md).
+      if (system.lags_far_history() &&
+          (options_.finite_peclet || (after_exact && ++poor_after_exact >= 2)))
         krylov = true;
-      } else if (after_exact && system.lags_far_history() && ++poor_after_exact >= 2) {
-        system.KeepWholeHistory(in);
-      }
       ok = factorize(true) && system.Correction(x, krylov, &delta);
       if (ok) change = ChangeOfTemperatures(delta, n, nz);
       r = 0;

@@ -227,11 +227,6 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
     for (int j = 0; j < nz_; ++j) rhs_[i * block_ + j] = b_(i, j);
 }
 
-void FilmEnergySystem::KeepWholeHistory(const FilmEnergyInputs& in) {
-  lag_far_ = false;
-  BuildMatrix(in);
-}
-
 bool FilmEnergySystem::HasFactorization() const { return klu_->numeric != nullptr; }
 
 bool FilmEnergySystem::Factorize(bool exact) {
@@ -281,9 +276,9 @@ bool FilmEnergySystem::Factorize(bool exact) {
           ++dropped;
           continue;
         }
-        // Exact: inside a zone only the near band of the history (the whole history, kept
-        // for strongly coupled solids, would fill the zone's block: a 129-node rigid film
-        // with reverse flow everywhere took 4 times as long).
+        // Exact: inside a zone only the near band of the history (A holds no more; a whole
+        // history would fill the zone's block: a 129-node rigid film with reverse flow
+        // everywhere took 4 times as long).
         if (ri - ci > zone_band) {
           ++zone_lagged;
           continue;
@@ -419,7 +414,7 @@ void FilmEnergySystem::BuildMatrix(const FilmEnergyInputs& in) {
     }
   signature.back() = in.fixed_walls;
   moving_walls_ = !in.fixed_walls;
-  const int near = lag_far_ ? near_cells_ : n_;
+  const int near = near_cells_;
   const bool in_place = !values_.empty() && signature == signature_ && near == built_near_ &&
                         in.factor1 == built_factor1_ && in.factor2 == built_factor2_ &&
                         in.omega1 == built_omega1_ && in.omega2 == built_omega2_;

@@ -67,9 +67,6 @@ class FilmEnergySystem {
   // Whether A (assembled) leaves a far history out: then even a factorization of the full A
   // is a chord step, and a step is exact only when this is false.
   bool lags_far_history() const { return moving_walls_ && (!far_[0].empty() || !far_[1].empty()); }
-  // From now on the whole history in A (none lagged): for a solid so strongly coupled to the
-  // film that the lagged far part converges slowly. Rebuilds the assembled matrix for `in`.
-  void KeepWholeHistory(const FilmEnergyInputs& in);
   // delta = A_f^-1 (b - A x) with A_f the last factorized matrix (a chord step), or with
   // krylov (and a far history outside A) the solution of A_whole delta = b - A_whole x by
   // GMRES preconditioned with A_f, to a relative residual kKrylovTolerance. False if KLU fails
@@ -102,7 +99,6 @@ class FilmEnergySystem {
   FarHistory far_[2];                  // their far parts (as built into the matrix)
   mutable std::vector<double> far_y_;  // work array of the far history [m^(1/2) m]
   bool moving_walls_ = false;
-  bool lag_far_ = true;  // false after KeepWholeHistory
   bool lags_couplings_ = false;
   // Conduction along x through face i - 1/2 per unit of dxi (0 at the ends) [W/(m K)], and
   // the heat capacity of the assembled system [J/(kg K)].

@@ -121,7 +121,8 @@ class FilmEnergySolver {
     // flow; false = a fresh factorization (without reverse flow) in every Solve.
     bool reuse_factorization = true;
     // Lags i - k <= this of the surface-temperature history kept in the factorized matrix, the
-    // rest applied by FFT and lagged (all of it in the matrix if that converges slowly) [cells].
+    // rest applied by FFT and lagged (GMRES steps on the whole history if that converges
+    // slowly) [cells].
     int history_near_cells = 4;                 // >= 0 [-]
     // Surface temperatures from Jaeger's moving line source at the solids' own Peclet numbers
     // (include/tehl/ehl/surface_temperature.hpp; effect `finite_peclet`) instead of the

@@ -92,7 +92,6 @@ TEST(FilmEnergyFinitePeclet, SurfacesSatisfyTheWholeKernelAndTheBalanceCloses) {
     // whose surface at the inlet end stays at T0.
     EXPECT_LT(surf1, surf1_high) << c.name;
     EXPECT_EQ(high.t.t1_k[0], kT0) << c.name;
-    EXPECT_EQ(high.summary.krylov_iterations, 0) << c.name;
     EXPECT_GT(fin.summary.krylov_iterations, 0) << c.name;
   }
 }

@@ -368,10 +368,10 @@ TEST(FilmEnergySolver, StronglyCoupledPolymerSolidsSatisfyTheWholeHistory) {
   // little per unit flux (film conduction k/h times F 2 sqrt(L) ~ 0.1); here polymer-like
   // solids (rho 1300 kg/m^3, c 1340 J/(kg K), k 0.25 W/(m K): effusivity 660 against 12 600
   // for bronze) under a 0.1 um film make that ~ 200 times larger. With the default band, with
-  // none (the lagged history converges too slowly: the solve takes all of it into the matrix)
-  // and with the whole history, contract: each converges, its surfaces are the O(n^2)
-  // moving-heat-source sums of its fluxes (the derivation in surface_temperature_test.cpp) to
-  // 1e-6 of the rise, the balance closes within 1 % (VALIDATION.md section 4), and the three
+  // none (the lagged history converges too slowly: the solve goes on with GMRES steps on the
+  // whole history) and with the whole history, contract: each converges, its surfaces are the
+  // O(n^2) moving-heat-source sums of its fluxes (the derivation in surface_temperature_test.cpp)
+  // to 1e-6 of the rise, the balance closes within 1 % (VALIDATION.md section 4), and the three
   // agree to ten times the tolerance.
   const SolidThermal polymer{1300.0, 1340.0, 0.25};
   EhlLikeParameters c;
@@ -390,8 +390,10 @@ TEST(FilmEnergySolver, StronglyCoupledPolymerSolidsSatisfyTheWholeHistory) {
     const auto s = solver.Solve(f, nullptr, 0.0, &t);
     ASSERT_TRUE(s.usable()) << near << ": " << s.BriefReport();
     const double scale = t.MaxTemperature() - kT0;
-    std::printf("polymer solids, near band %d: %d steps, %d factorizations, T_max - T0 = %.3f K\n",
-                near, s.iterations, s.factorizations, scale);
+    std::printf(
+        "polymer solids, near band %d: %d steps, %d factorizations, %d GMRES iterations, "
+        "T_max - T0 = %.3f K\n",
+        near, s.iterations, s.factorizations, s.krylov_iterations, scale);
     const Eigen::VectorXd rise1 = src.Rise(polymer, c.u1_m_s, t.q1_w_m2);
     const Eigen::VectorXd rise2 = src.Rise(polymer, c.u2_m_s, t.q2_w_m2);
     EXPECT_LT((t.t1_k.array() - kT0 - rise1.array()).abs().maxCoeff(), 1e-6 * scale) << near;
