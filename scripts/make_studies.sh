@@ -20,7 +20,8 @@ if [[ ! -x "$TEHL" ]]; then
 fi
 studies=("$@")
 if [[ ${#studies[@]} -eq 0 ]]; then
-  studies=(load speed lubricant tooth_form roughness_amplitude roughness_wavelength tip_relief)
+  studies=(load speed lubricant tooth_form roughness_amplitude roughness_wavelength tip_relief
+    surface_temperature)
 fi
 mkdir -p "$OUT" docs/studies
 tables="$OUT/tables.md"

@@ -189,22 +189,35 @@ def main():
     for lab in labels:
         x = f["parameters"][lab][:]
         if not np.issubdtype(x.dtype, np.number):
-            ticks = [value_text(v) for v in x]
-            x = np.arange(len(x))
+            ticks = list(dict.fromkeys(value_text(v) for v in x))  # distinct, in order
+            x = np.array([ticks.index(value_text(v)) for v in x], dtype=float)
         else:
             ticks = None
+        # One line per combination of the other varied parameters, along this one.
+        others = [o for o in labels if o != lab]
+        groups = {}
+        for row in range(len(x)):
+            if ok[row]:
+                groups.setdefault(scene_label(f, row, others), []).append(row)
+        if others and all(len(rows) == 1 for rows in groups.values()):
+            # Parameters varied together (zip mode): one line through all scenes.
+            groups, others = {"": [r for rows in groups.values() for r in rows]}, []
         fig, axes = plt.subplots(len(quantities), 1, figsize=(5, 1.6 * len(quantities) + 0.6),
                                  sharex=True, squeeze=False)
         for ax, (k, ylabel, scale) in zip(axes[:, 0], quantities):
             y = f["summary"][k][:] * scale
-            ax.plot(x[ok], y[ok], "o-", lw=1.2)
+            for name, rows in groups.items():
+                rows = sorted(rows, key=lambda r: x[r])
+                ax.plot(x[rows], y[rows], "o-", lw=1.2, label=name or None)
             ax.set_ylabel(ylabel, fontsize=8)
             ax.tick_params(labelsize=8)
             ax.grid(alpha=0.3)
+        if others:
+            axes[0, 0].legend(fontsize=6)
         unit = text(f["parameters"][lab].attrs.get("unit", b""))
         axes[-1, 0].set_xlabel(f"{lab} [{unit}]" if ticks is None else lab)
         if ticks is not None:
-            axes[-1, 0].set_xticks(x, ticks)
+            axes[-1, 0].set_xticks(range(len(ticks)), ticks)
         save(fig, lab.replace("/", "_").replace(".", "_"))
     for w in written:
         print(w)
