@@ -40,8 +40,8 @@ void PrintCycleFlash(const MeshCycleResult& r, size_t converged_steps) {
   size_t at = 0;
   for (size_t k = 1; k < converged_steps; ++k)
     if (flash[k] > flash[at]) at = k;
-  std::printf("flash temperature (Blok, with each step's mu): max rise %.3g K at s = %.4g mm",
-              flash[at], r.steps[at].s_m * 1e3);
+  std::printf("flash temperature (Blok%s, with each step's mu): max rise %.3g K at s = %.4g mm",
+              r.finite_peclet ? ", finite Peclet" : "", flash[at], r.steps[at].s_m * 1e3);
   if (r.thermal) {
     double t1 = 0, t2 = 0;
     const double t0 = r.inlet_temperature_k;
@@ -61,8 +61,8 @@ void PrintCycleFlash(const MeshCycleResult& r, size_t converged_steps) {
 constexpr double kHighPeclet = 5.0;
 
 void NoteCyclePeclet(const MeshCycleResult& r, size_t converged_steps) {
-  if (!r.thermal || !r.elastic) return;
-  const bool blok_only = r.finite_peclet;  // the film's surfaces already conduct along x
+  // With effects.finite_peclet the surfaces and the flash temperature conduct along x.
+  if (!r.thermal || !r.elastic || r.finite_peclet) return;
   double lowest = std::numeric_limits<double>::infinity();
   size_t at = 0;
   const char* body = "pinion";
@@ -85,15 +85,6 @@ void NoteCyclePeclet(const MeshCycleResult& r, size_t converged_steps) {
     }
   }
   if (!(lowest < kHighPeclet)) return;
-  if (blok_only) {
-    std::printf(
-        "note: the Peclet number u b / (2 kappa) of the %s falls to %.3g (at s = %.4g mm), "
-        "below about %.0f: the film's surface temperatures include the conduction along the "
-        "surface (effects.finite_peclet), Blok's flash temperature does not and overstates the "
-        "rise there\n",
-        body, lowest, r.steps[at].s_m * 1e3, kHighPeclet);
-    return;
-  }
   std::printf(
       "note: the Peclet number u b / (2 kappa) of the %s falls to %.3g (at s = %.4g mm), below "
       "about %.0f: there the surface temperatures, which neglect conduction along the surface "
@@ -239,8 +230,9 @@ int RunContact(const RunArgs& a) {
   std::printf("h_min = %.6g m, h_c = %.6g m, p_max = %.6g Pa\n", last.h_min_m, last.h_c_m,
               last.p_max_pa);
   if (last.summary.usable() && last.flash_rise_blok_k > 0) {  // sliding, elastic
-    std::printf("mu = %.4g; flash temperature (Blok, with this mu): rise %.3g K",
-                last.friction_coefficient, last.flash_rise_blok_k);
+    std::printf("mu = %.4g; flash temperature (Blok%s, with this mu): rise %.3g K",
+                last.friction_coefficient, r.finite_peclet ? ", finite Peclet" : "",
+                last.flash_rise_blok_k);
     if (last.t_max_k > r.inlet_temperature_k)  // thermal: the film's own surfaces beside it
       std::printf("; the film's surfaces: max rise %.3g K (body 1), %.3g K (body 2)",
                   last.t1_max_k - r.inlet_temperature_k, last.t2_max_k - r.inlet_temperature_k);

@@ -71,6 +71,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   ContactRunResult result;
   result.x_start_b = film.x_start_b;
   result.inlet_temperature_k = film.inlet_temperature_k;
+  result.finite_peclet = film.effects.finite_peclet;
   FilmState state;
   const bool thermal = film.effects.thermal;
   const int nz = film.options.film_nodes;
@@ -109,12 +110,13 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
     rec.t2_max_k = heated ? state.temperature.t2_k.maxCoeff() : film.inlet_temperature_k;
     // Each surface's own speed through the contact, whichever way it moves.
     const double v1 = std::abs(c.u1_m_s), v2 = std::abs(c.u2_m_s);
-    rec.flash_rise_blok_k = !film.effects.elastic ? -1.0
-                            : v1 + v2 > 0 && c.load_n_per_m > 0
-                                ? BlokFlashTemperature({rec.friction_coefficient, c.load_n_per_m,
-                                                        v1, v2, inlet.half_width_m},
-                                                       film.solids.body1, film.solids.body2)
-                                : 0.0;
+    rec.flash_rise_blok_k =
+        !film.effects.elastic ? -1.0
+        : v1 + v2 > 0 && c.load_n_per_m > 0
+            ? FlashTemperature(
+                  {rec.friction_coefficient, c.load_n_per_m, v1, v2, inlet.half_width_m},
+                  film.solids.body1, film.solids.body2, film.effects.finite_peclet)
+            : 0.0;
     rec.summary = s;
     result.steps.push_back(rec);
     if (!ro.quiet)

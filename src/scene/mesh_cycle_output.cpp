@@ -60,8 +60,9 @@ const std::vector<CycleColumn>& CycleColumns() {
 
 constexpr const char* kBlokMeaning =
     "Blok flash temperature rise with this step's mu, w, speeds and Hertz half-width: the "
-    "friction heat released over the Hertz zone, both surfaces at the same peak rise "
-    "(docs/thermal.md \"Flash temperature\"; -1: rigid solids)";
+    "friction heat released over the Hertz zone, both surfaces at the same peak rise, at high "
+    "Peclet number or, with effects.finite_peclet, Jaeger's kernel (docs/thermal.md \"Flash "
+    "temperature\"; -1: rigid solids)";
 
 std::vector<double> Column(const MeshCycleResult& r, const CycleColumn& c) {
   std::vector<double> v;

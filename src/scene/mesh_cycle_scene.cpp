@@ -92,7 +92,7 @@ std::vector<double> MeshCycleResult::BlokFlashRises() const {
     in.u2_m_s = st.u2_m_s;
     in.half_width_m =
         LineContactHertz(st.load_n_per_m, st.reduced_radius_m, e_prime_pa).half_width_m;
-    out.push_back(BlokFlashTemperature(in, solids.body1, solids.body2));
+    out.push_back(FlashTemperature(in, solids.body1, solids.body2, finite_peclet));
   }
   return out;
 }

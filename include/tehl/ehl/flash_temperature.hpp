@@ -44,6 +44,25 @@ double BlokFlashTemperature(const FlashTemperatureInputs& in,
                             const SolidThermal& body1,
                             const SolidThermal& body2);
 
+// Blok's partition (equal peak rises) with the finite-Peclet surface temperatures of
+// surface_temperature.hpp (Jaeger's moving line source at each solid's own Peclet number
+// u_i b / (2 kappa_i), conduction along the surface included): M_i, the peak rise of solid i
+// carrying the whole heat mu w |u1 - u2| with the semi-elliptic distribution (exact cell
+// means on `cells` cells across 2b), and theta_f = M_1 M_2 / (M_1 + M_2) (with one solid at
+// rest, the other's M). Tends to BlokFlashTemperature at high Peclet numbers and stays below
+// it. Same input rules, and cells >= 8; O(cells^2).
+double FinitePecletFlashTemperature(const FlashTemperatureInputs& in,
+                                    const SolidThermal& body1,
+                                    const SolidThermal& body2,
+                                    int cells = 256);
+
+// Blok's flash temperature with a run's surface model: FinitePecletFlashTemperature when
+// finite_peclet (effect `finite_peclet`), else BlokFlashTemperature.
+double FlashTemperature(const FlashTemperatureInputs& in,
+                        const SolidThermal& body1,
+                        const SolidThermal& body2,
+                        bool finite_peclet);
+
 // (theta_1 e_1 sqrt(u1) + theta_2 e_2 sqrt(u2)) / (e_1 sqrt(u1) + e_2 sqrt(u2)) [K]: the peak
 // rises theta_1, theta_2 of the two surfaces weighted as above; equal to theta_f for any
 // partition of a semi-elliptic heat source. Same input rules for the speeds.

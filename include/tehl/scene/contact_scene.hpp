@@ -44,6 +44,7 @@ struct ContactRunResult {
   std::string history_csv;  // NAME_steps.csv: the steady solve, then one row per time step
   double x_start_b = 0;     // [numerics] x_start_b of the case (the inlet end of the grid) [-]
   double inlet_temperature_k = 0;  // T0 of the oil and the bulk of both bodies [K]
+  bool finite_peclet = false;      // effects.finite_peclet of the case
   bool converged() const;   // every step usable
 };
 

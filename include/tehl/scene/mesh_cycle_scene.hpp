@@ -96,8 +96,8 @@ struct MeshCycleResult {
   ContactSolids solids;                  // thermal properties of pinion (body1) and wheel
   double inlet_temperature_k = 0;        // T0 of the oil and the bulk of both solids [K]
   // Blok's flash temperature rise of each step with its own mu, w, u1, u2 and Hertz
-  // half-width (BlokFlashTemperature; docs/thermal.md "Flash temperature"), one per row;
-  // -1 for rigid solids (no Hertz zone) [K].
+  // half-width (FlashTemperature with finite_peclet; docs/thermal.md "Flash temperature"), one per
+  // row; -1 for rigid solids (no Hertz zone) [K].
   std::vector<double> BlokFlashRises() const;
 };
 

@@ -109,15 +109,14 @@ TEST(RunNotes, ASlowSolidIsNotedInAThermalCycle) {
   EXPECT_NE(r.out.find("finite_peclet = true includes it"), std::string::npos) << r.out;
 }
 
-// With effects.finite_peclet the film's surfaces conduct along x; only Blok's estimate is left
-// with the high-speed form, and the note says so.
-TEST(RunNotes, FinitePecletSurfacesLeaveOnlyBlokInTheNote) {
+// With effects.finite_peclet the film's surfaces and Blok's partition both use Jaeger's
+// kernel at each tooth's Peclet number: no note, and the flash line says which form it is.
+TEST(RunNotes, FinitePecletSurfacesNeedNoPecletNote) {
   const RunResult r = RunTehl("run -q '" + Seed004Case(true, UniqueTempPath("out"), true) + "'");
   ASSERT_TRUE(r.exited);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("of the pinion falls to 1.31"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("include the conduction along the surface (effects.finite_peclet), "
-                       "Blok's flash temperature does not"),
+  EXPECT_EQ(r.out.find("Peclet number"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("flash temperature (Blok, finite Peclet, with each step's mu)"),
             std::string::npos)
       << r.out;
 }

@@ -7,11 +7,19 @@
 //     Jaeger) under a semi-elliptic flux shared so that the peaks are equal, for unlike solids
 //     and speeds;
 //   - the partition-free weighted mean of the two peaks.
+// And its finite-Peclet form (Jaeger's moving line source) against Blok at high Peclet
+// numbers and, for one solid at low Peclet numbers, against the logarithmic limit of the
+// kernel: with e^z -> 1 and K0(z) = -ln(z/2) - gamma, the peak (at x = 0 by symmetry) of a
+// semi-elliptic source Q is (Q/(pi k)) [-ln(omega b/2) - gamma - <ln|t|>], <ln|t|> the mean
+// of ln|t| under (2/pi) sqrt(1 - t^2) on [-1, 1], = (4/pi) int_0^1 sqrt(1 - t^2) ln t dt =
+// -(1 + 2 ln 2)/2 (Gradshteyn & Ryzhik 4.241): (Q/(pi k)) [ln(4/Pe) - gamma + 1/2], Pe = omega b,
+// to O(Pe^2 ln Pe) relative.
 #include "tehl/ehl/flash_temperature.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "tehl/error.hpp"
 
@@ -116,7 +124,56 @@ TEST(BlokFlashTemperature, NoFrictionHeatNoRise) {
   EXPECT_EQ(BlokFlashTemperature({0.05, 0.0, 3.0, 1.0, 0.0}, kSteel, kSteel), 0.0);  // unloaded
 }
 
+TEST(FinitePecletFlashTemperature, TendsToBlokAtHighPecletNumbers) {
+  // Solids with the effusivities sqrt(k rho c) of bronze and steel (the same Blok value) but
+  // diffusivities 10^4 times smaller: Pe = omega b of 1.8e4 and more.
+  const SolidThermal slow_bronze{7890.0 * 100, 375.0, 55.0 / 100};
+  const SolidThermal slow_steel{7850.0 * 100, 470.0, 46.0 / 100};
+  const FlashTemperatureInputs in{0.05, 1.16e5, 3.0, 1.0, 1.42e-4};
+  const double blok = BlokFlashTemperature(in, slow_bronze, slow_steel);
+  EXPECT_NEAR(BlokFlashTemperature(in, kBronze, kSteel), blok, 1e-12 * blok);
+  const double finite = FinitePecletFlashTemperature(in, slow_bronze, slow_steel);
+  std::printf("high Pe: finite-Peclet %.4f K, Blok %.4f K\n", finite, blok);
+  EXPECT_NEAR(finite, blok, 5e-3 * blok);
+}
+
+TEST(FinitePecletFlashTemperature, OneSolidAtLowPecletNumberGivesTheLogarithmicLimit) {
+  // Body 2 at rest: body 1 carries all the heat (reference above).
+  constexpr double kEulerGamma = 0.57721566490153286;
+  const double b = 1e-4, mu = 0.05, w = 1e5;
+  for (double pe : {1e-2, 1e-3}) {
+    const double kappa = 46.0 / (7850.0 * 470.0);
+    const double u1 = 2 * kappa * pe / b;
+    const double heat = mu * w * u1;
+    const double expect = heat / (M_PI * 46.0) * (std::log(4 / pe) - kEulerGamma + 0.5);
+    const double got = FinitePecletFlashTemperature({mu, w, u1, 0.0, b}, kSteel, kSteel);
+    std::printf("Pe %.0e: peak %.6f K, logarithmic limit %.6f K\n", pe, got, expect);
+    EXPECT_NEAR(got, expect, 1e-3 * expect) << pe;
+  }
+}
+
+TEST(FinitePecletFlashTemperature, BelowBlokAndCloserAsThePecletNumberGrows) {
+  // Seed 004's pinion at A: Pe 1.31 (docs/thermal.md); bronze pair, 2:1 sliding, b = 71.5 um.
+  const double b = 7.15e-5, kappa = 55.0 / (7890.0 * 375.0);
+  double last = 0;
+  for (double pe : {0.1, 0.3, 1.31, 3.0, 10.0, 100.0}) {
+    const double u2 = 2 * kappa * pe / b, u1 = 2 * u2;
+    const FlashTemperatureInputs in{0.05, 4.7e4, u1, u2, b};
+    const double ratio = FinitePecletFlashTemperature(in, kBronze, kBronze) /
+                         BlokFlashTemperature(in, kBronze, kBronze);
+    std::printf("Pe %6.2f (slower solid): finite-Peclet / Blok = %.4f\n", pe, ratio);
+    EXPECT_LT(ratio, 1.0) << pe;
+    EXPECT_GT(ratio, last) << pe;
+    last = ratio;
+  }
+  EXPECT_GT(last, 0.99);
+}
+
 TEST(BlokFlashTemperature, RejectsBadInput) {
+  EXPECT_THROW(FinitePecletFlashTemperature({0.05, 1e5, 1, 2, 1e-4}, kSteel, kSteel, 4),
+               InputError);
+  EXPECT_THROW(FinitePecletFlashTemperature({0.05, 1e5, 0, 0, 1e-4}, kSteel, kSteel), InputError);
+  EXPECT_EQ(FinitePecletFlashTemperature({0.0, 1e5, 1, 2, 1e-4}, kSteel, kSteel), 0.0);
   EXPECT_THROW(BlokFlashTemperature({-0.1, 1e5, 3.0, 1.0, 1e-4}, kSteel, kSteel), InputError);
   EXPECT_THROW(BlokFlashTemperature({0.1, 1e5, -3.0, 1.0, 1e-4}, kSteel, kSteel), InputError);
   EXPECT_THROW(BlokFlashTemperature({0.1, 1e5, 0.0, 0.0, 1e-4}, kSteel, kSteel), InputError);
