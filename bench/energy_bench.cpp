@@ -5,7 +5,9 @@
 // bronze solids. Cold = from T0 with a fresh KLU analysis and factorization
 // (reuse_factorization = false); warm = from the converged temperature and the kept
 // factorization after the heating grew by 1 % (what the thermal coupling loop of the pressure
-// solver does).
+// solver does). Third argument 1: finite-Peclet surface temperatures (Options::finite_peclet,
+// Jaeger's kernel; Pe = u b / (2 kappa) = 2.7 and 4.0 for the two bronze surfaces here),
+// against 0, the high-Peclet form, in the same run.
 //   ./energy_bench --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
@@ -27,6 +29,7 @@ void Run(benchmark::State& state, bool warm) {
   FilmEnergySolver::Options o;
   o.film_nodes = nz;
   o.reuse_factorization = warm;
+  o.finite_peclet = state.range(2) != 0;
   const FilmEnergySolver solver(g, oil, tehl::testing::Bronze(), tehl::testing::Bronze(),
                                 oil.reference_temperature_k(), o);
   FilmTemperature converged;
@@ -39,6 +42,7 @@ void Run(benchmark::State& state, bool warm) {
   }
   state.counters["iterations"] = s.iterations;
   state.counters["factorizations"] = s.factorizations;
+  state.counters["gmres"] = s.krylov_iterations;
   state.counters["balance_error"] = s.balance.RelativeError();
   state.counters["converged"] = s.usable();
 }
@@ -47,13 +51,20 @@ void BM_EnergySteadyCold(benchmark::State& state) { Run(state, false); }
 void BM_EnergySteadyWarm(benchmark::State& state) { Run(state, true); }
 
 BENCHMARK(BM_EnergySteadyCold)
-    ->Args({129, 11})
-    ->Args({257, 11})
-    ->Args({513, 11})
-    ->Args({1025, 11})
-    ->Args({513, 21})
+    ->Args({129, 11, 0})
+    ->Args({257, 11, 0})
+    ->Args({513, 11, 0})
+    ->Args({513, 11, 1})
+    ->Args({1025, 11, 0})
+    ->Args({1025, 11, 1})
+    ->Args({513, 21, 0})
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_EnergySteadyWarm)->Args({513, 11})->Args({1025, 11})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EnergySteadyWarm)
+    ->Args({513, 11, 0})
+    ->Args({513, 11, 1})
+    ->Args({1025, 11, 0})
+    ->Args({1025, 11, 1})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
