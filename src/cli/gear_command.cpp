@@ -196,11 +196,17 @@ void Stiffness(std::ostream& o, const internal::GearCase& c) {
   }
 }
 
+// The solids of the flash temperature and the case's surface model.
+struct FlashModel {
+  ContactSolids solids;
+  bool finite_peclet = false;  // effects.finite_peclet: Jaeger's kernel (docs/thermal.md)
+};
+
 // Blok's flash temperature rise of each row with friction coefficient mu (docs/thermal.md
 // "Flash temperature"): the row's pair load w, its speeds and the Hertz half-width at w [K].
 std::vector<double> FlashRises(const internal::GearCase& c,
                                const std::vector<MeshCycleRow>& rows,
-                               const ContactSolids& solids,
+                               const FlashModel& m,
                                double mu) {
   std::vector<double> out;
   const double e_prime = c.ReducedModulusPa();
@@ -208,20 +214,21 @@ std::vector<double> FlashRises(const internal::GearCase& c,
     const ContactPoint& q = r.contact;
     out.push_back(
         r.load_n_per_m > 0
-            ? BlokFlashTemperature(
+            ? FlashTemperature(
                   {mu, r.load_n_per_m, q.u1_m_s, q.u2_m_s,
                    LineContactHertz(r.load_n_per_m, q.reduced_radius_m, e_prime).half_width_m},
-                  solids.body1, solids.body2)
+                  m.solids.body1, m.solids.body2, m.finite_peclet)
             : 0.0);
   }
   return out;
 }
 
-void Flash(std::ostream& o, const internal::GearCase& c, const ContactSolids& solids, double mu) {
+void Flash(std::ostream& o, const internal::GearCase& c, const FlashModel& m, double mu) {
   const std::vector<MeshCycleRow> rows = internal::GearCaseCycle(c, 401);
-  const std::vector<double> rise = FlashRises(c, rows, solids, mu);
+  const std::vector<double> rise = FlashRises(c, rows, m, mu);
   const size_t at = static_cast<size_t>(std::max_element(rise.begin(), rise.end()) - rise.begin());
-  o << "\nFlash temperature (Blok, mu = " << Fmt("%.4g", mu)
+  o << "\nFlash temperature (Blok" << (m.finite_peclet ? ", finite Peclet" : "")
+    << ", mu = " << Fmt("%.4g", mu)
     << ", the load sharing's pair load, Hertz half-width at it):\n  largest rise "
     << Fmt("%.2f", rise[at]) << " K at s = " << Fmt("%.3f", rows[at].contact.s_m * 1e3)
     << " mm (SRR " << Fmt("%+.3f", rows[at].contact.srr) << "); at A " << Fmt("%.2f", rise.front())
@@ -233,7 +240,7 @@ void Flash(std::ostream& o, const internal::GearCase& c, const ContactSolids& so
 void WriteCsv(const std::string& file,
               const internal::GearCase& c,
               int points,
-              const ContactSolids& solids,
+              const FlashModel& m,
               std::optional<double> mu) {
   std::ofstream out(file);
   if (!out)
@@ -243,7 +250,7 @@ void WriteCsv(const std::string& file,
       << (mu ? ",dT_flash_blok_k" : "") << "\n";
   out.precision(10);
   const std::vector<MeshCycleRow> rows = internal::GearCaseCycle(c, points);
-  const std::vector<double> rise = mu ? FlashRises(c, rows, solids, *mu) : std::vector<double>();
+  const std::vector<double> rise = mu ? FlashRises(c, rows, m, *mu) : std::vector<double>();
   for (size_t i = 0; i < rows.size(); ++i) {
     const MeshCycleRow& r = rows[i];
     const ContactPoint& q = r.contact;
@@ -302,11 +309,12 @@ Command AddGearCommand(CLI::App& app) {
             Geometry(o, *c);
             Path(o, *c);
             Stiffness(o, *c);
-            const ContactSolids solids = internal::ReadContactSolids(doc);
-            if (args->mu) Flash(o, *c, solids, *args->mu);
+            const FlashModel flash{internal::ReadContactSolids(doc),
+                                   doc.Bool("effects", "finite_peclet")};
+            if (args->mu) Flash(o, *c, flash, *args->mu);
             for (const auto& w : c->warnings) o << "warning: " << w.ToString() << "\n";
             std::cout << o.str();
-            if (!args->csv.empty()) WriteCsv(args->csv, *c, args->points, solids, args->mu);
+            if (!args->csv.empty()) WriteCsv(args->csv, *c, args->points, flash, args->mu);
             if (!args->profile.empty()) WriteProfile(args->profile, *c->pair);
             return kExitOk;
           }};

@@ -164,6 +164,45 @@ TEST_F(GearCommand, MuGivesBlokFlashTemperatureAlongThePath) {
   EXPECT_EQ(Tehl("gear cases/seed004_sae40.toml --mu -0.1").code, 2);
 }
 
+TEST_F(GearCommand, FinitePecletCaseGivesBlokWithJaegersKernel) {
+  // The same case with [effects] finite_peclet = true: Blok's partition with Jaeger's kernel
+  // at each tooth's Peclet number (docs/thermal.md "Flash temperature"), which stays below the
+  // high-Peclet value and approaches it as Pe grows (FinitePecletFlashTemperature tests: 2.6 %
+  // below at Pe 1.31 of the slower solid, 0.6 % at 3). The pinion's Pe is 1.31 at A and about
+  // 4.8 at the pitch point, so A is lowered most.
+  std::ifstream in(std::string(TEHL_SOURCE_DIR) + "/cases/seed004_sae40.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto at = text.find("thermal = true");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at, "finite_peclet = true\n");
+  const fs::path case_file = dir_ / "finite_peclet.toml";
+  std::ofstream(case_file) << text;
+  const fs::path high_csv = dir_ / "high.csv", finite_csv = dir_ / "finite.csv";
+  ASSERT_EQ(
+      Tehl("gear cases/seed004_sae40.toml --mu 0.05 --points 21 --csv " + high_csv.string()).code,
+      0);
+  const Result r =
+      Tehl("gear " + case_file.string() + " --mu 0.05 --points 21 --csv " + finite_csv.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("Flash temperature (Blok, finite Peclet, mu = 0.05"), std::string::npos)
+      << r.out;
+  const NumericCsv high = ReadNumericCsv(high_csv), finite = ReadNumericCsv(finite_csv);
+  ASSERT_EQ(high.rows.size(), finite.rows.size());
+  for (size_t i = 0; i < high.rows.size(); ++i) {
+    const double h = high.rows[i][18], f = finite.rows[i][18];
+    if (h == 0) {
+      EXPECT_EQ(f, 0.0) << "row " << i;
+      continue;
+    }
+    EXPECT_LT(f, h) << "row " << i;
+    EXPECT_GT(f, 0.95 * h) << "row " << i;
+  }
+  const double at_a = finite.rows.front()[18] / high.rows.front()[18];
+  const double near_c =
+      finite.rows[high.rows.size() / 2 + 1][18] / high.rows[high.rows.size() / 2 + 1][18];
+  EXPECT_LT(at_a, near_c);
+}
+
 TEST_F(GearCommand, ProfileCsvListsBothGears) {
   const fs::path csv = dir_ / "profile.csv";
   const Result r = Tehl("gear cases/asymmetric_35_20.toml --profile " + csv.string());
