@@ -15,6 +15,7 @@ writes, like seed 004 Figs. 3-6:
 Exit codes: 0 done, 2 the file is missing or not a mesh-cycle result.
 """
 import argparse
+import re
 import os
 import sys
 
@@ -52,6 +53,15 @@ def path_ends(cyc):
     a = ("A", begin) if begin <= 0 else ("A'", begin)
     e = ("E", end) if end >= cyc.attrs["length"] else ("E'", end)
     return a, e
+
+
+def finite_peclet(f):
+    """Whether the run's case (/case, the TOML as run) switched effects.finite_peclet on."""
+    if "case" not in f:
+        return False
+    raw = f["case"][()]
+    text = raw.decode() if isinstance(raw, bytes) else str(raw)
+    return re.search(r"(?m)^\s*finite_peclet\s*=\s*true", text) is not None
 
 
 def main():
@@ -152,12 +162,15 @@ def main():
         fig, (at, af) = plt.subplots(2, 1, figsize=(7, 6.5), sharex=True)
         at.plot(s, cyc["T_max"][:] - 273.15, label=r"$T_{max}$ (film)")
         at.plot(s, cyc["T_mid"][:] - 273.15, ls="--", label=r"mid-film $T_{max}$")
-        at.plot(s, cyc["T1_max"][:] - 273.15, label="pinion surface")
-        at.plot(s, cyc["T2_max"][:] - 273.15, label="wheel surface")
+        # The surfaces' model: the high-speed form of seed 004, or Jaeger's kernel at each
+        # tooth's Peclet number (docs/thermal.md "Surface temperatures at any Peclet number").
+        model = " (finite Pe)" if finite_peclet(f) else ""
+        at.plot(s, cyc["T1_max"][:] - 273.15, label="pinion surface" + model)
+        at.plot(s, cyc["T2_max"][:] - 273.15, label="wheel surface" + model)
         if "dT_flash_blok" in cyc and "T0" in cyc.attrs:
             # Blok's estimate with the film's own mu (docs/thermal.md "Flash temperature").
             at.plot(s, cyc.attrs["T0"] + cyc["dT_flash_blok"][:] - 273.15, color="0.3",
-                    lw=0.9, ls="-.", label=r"surface by Blok (film's $\mu$)")
+                    lw=0.9, ls="-.", label=r"surface by Blok (film's $\mu$)" + model)
         at.set_ylabel("temperature [C]")
         af.plot(s, cyc["mu"][:], color="C3", label=r"friction coefficient $\mu$")
         af.set_ylabel(r"$\mu$ [-]")
