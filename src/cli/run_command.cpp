@@ -10,6 +10,7 @@
 #include "scene/case_reader.hpp"
 #include "tehl/ehl/inlet_truncation.hpp"
 #include "tehl/ehl/outlet_spike.hpp"
+#include "tehl/ehl/surface_temperature.hpp"
 #include "tehl/scene/contact_scene.hpp"
 #include "tehl/scene/mesh_cycle_scene.hpp"
 #include "tehl/units.hpp"
@@ -60,38 +61,65 @@ void PrintCycleFlash(const MeshCycleResult& r, size_t converged_steps) {
 // 13.3). Notes the smallest Pe of either solid along a thermal cycle when it is below that.
 constexpr double kHighPeclet = 5.0;
 
+// The smallest Peclet number u b / (2 kappa) of either solid over (b, u1, u2) samples, and
+// where: the sample index and the body (0, 1). Samples with b or a speed <= 0 are skipped.
+struct LowestPeclet {
+  double pe = std::numeric_limits<double>::infinity();
+  size_t at = 0;
+  int body = 0;
+  bool Low() const { return pe < kHighPeclet; }
+};
+
+void ConsiderPeclet(
+    const ContactSolids& solids, double b, double u1, double u2, size_t k, LowestPeclet* lowest) {
+  if (!(b > 0)) return;
+  const SolidThermal* solid[] = {&solids.body1, &solids.body2};
+  const double speed[] = {std::abs(u1), std::abs(u2)};
+  for (int i = 0; i < 2; ++i) {
+    if (!(speed[i] > 0)) continue;
+    const double pe = MovingHeatSource::DecayRate(*solid[i], speed[i]) * b;
+    if (pe < lowest->pe) *lowest = {pe, k, i};
+  }
+}
+
+constexpr const char* kPecletAdvice =
+    "there the surface temperatures, which neglect conduction along the surface (the "
+    "high-speed moving heat source of seed 004 eqs. 14-15, and Blok's estimate), overstate the "
+    "rise; [effects] finite_peclet = true includes it (docs/thermal.md \"Surface temperatures "
+    "at any Peclet number\")";
+
 void NoteCyclePeclet(const MeshCycleResult& r, size_t converged_steps) {
   // With effects.finite_peclet the surfaces and the flash temperature conduct along x.
   if (!r.thermal || !r.elastic || r.finite_peclet) return;
-  double lowest = std::numeric_limits<double>::infinity();
-  size_t at = 0;
-  const char* body = "pinion";
+  LowestPeclet lowest;
   for (size_t k = 0; k < converged_steps; ++k) {
     const MeshCycleStep& st = r.steps[k];
     if (!(st.load_n_per_m > 0)) continue;
     const double b =
         LineContactHertz(st.load_n_per_m, st.reduced_radius_m, r.e_prime_pa).half_width_m;
-    const SolidThermal* solid[] = {&r.solids.body1, &r.solids.body2};
-    const double speed[] = {st.u1_m_s, st.u2_m_s};
-    for (int i = 0; i < 2; ++i) {
-      const double kappa =
-          solid[i]->conductivity_w_mk / (solid[i]->density_kg_m3 * solid[i]->heat_capacity_j_kgk);
-      const double pe = std::abs(speed[i]) * b / (2 * kappa);
-      if (pe < lowest) {
-        lowest = pe;
-        at = k;
-        body = i == 0 ? "pinion" : "wheel";
-      }
-    }
+    ConsiderPeclet(r.solids, b, st.u1_m_s, st.u2_m_s, k, &lowest);
   }
-  if (!(lowest < kHighPeclet)) return;
+  if (!lowest.Low()) return;
   std::printf(
       "note: the Peclet number u b / (2 kappa) of the %s falls to %.3g (at s = %.4g mm), below "
-      "about %.0f: there the surface temperatures, which neglect conduction along the surface "
-      "(the high-speed moving heat source of seed 004 eqs. 14-15, and Blok's estimate), "
-      "overstate the rise; [effects] finite_peclet = true includes it (docs/thermal.md "
-      "\"Surface temperatures at any Peclet number\")\n",
-      body, lowest, r.steps[at].s_m * 1e3, kHighPeclet);
+      "about %.0f: %s\n",
+      lowest.body == 0 ? "pinion" : "wheel", lowest.pe, r.steps[lowest.at].s_m * 1e3, kHighPeclet,
+      kPecletAdvice);
+}
+
+// The same for a [contact] run, over its converged levels.
+void NoteContactPeclet(const ContactRunResult& r) {
+  if (!r.thermal || r.finite_peclet) return;
+  LowestPeclet lowest;
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    if (r.steps[k].summary.usable())
+      ConsiderPeclet(r.solids, r.steps[k].half_width_m, r.steps[k].u1_m_s, r.steps[k].u2_m_s, k,
+                     &lowest);
+  if (!lowest.Low()) return;
+  std::printf(
+      "note: the Peclet number u b / (2 kappa) of body %d falls to %.3g (at t = %.4g s), below "
+      "about %.0f: %s\n",
+      lowest.body + 1, lowest.pe, r.steps[lowest.at].time_s, kHighPeclet, kPecletAdvice);
 }
 
 void NoteCycleSpikes(const MeshCycleResult& r, size_t converged_steps) {
@@ -242,6 +270,7 @@ int RunContact(const RunArgs& a) {
     NoteContactSpike(last.outlet_spike);
     NoteContactInlet(last.inlet, r.x_start_b);
   }
+  NoteContactPeclet(r);
   std::printf("wrote %s and %s\n", r.profile_csv.c_str(), r.history_csv.c_str());
   if (!r.converged()) {
     std::fprintf(stderr, "tehl run: the solver did not converge: %s\n",

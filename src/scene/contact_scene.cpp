@@ -72,6 +72,8 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   result.x_start_b = film.x_start_b;
   result.inlet_temperature_k = film.inlet_temperature_k;
   result.finite_peclet = film.effects.finite_peclet;
+  result.thermal = film.effects.thermal;
+  result.solids = film.solids;
   FilmState state;
   const bool thermal = film.effects.thermal;
   const int nz = film.options.film_nodes;
@@ -110,6 +112,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
     rec.t2_max_k = heated ? state.temperature.t2_k.maxCoeff() : film.inlet_temperature_k;
     // Each surface's own speed through the contact, whichever way it moves.
     const double v1 = std::abs(c.u1_m_s), v2 = std::abs(c.u2_m_s);
+    rec.half_width_m = inlet.half_width_m;
     rec.flash_rise_blok_k =
         !film.effects.elastic ? -1.0
         : v1 + v2 > 0 && c.load_n_per_m > 0

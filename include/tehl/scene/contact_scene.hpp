@@ -32,6 +32,7 @@ struct ContactStepRecord {
   double t1_max_k = 0, t2_max_k = 0;  // hottest surface of body 1, 2 (inlet T when isothermal) [K]
   double flash_rise_blok_k = 0;       // Blok's flash temperature rise with this mu (as
                                       //   /cycle/dT_flash_blok); -1 for rigid solids [K]
+  double half_width_m = 0;            // Hertz half-width b at this load; 0 for rigid solids [m]
   double wall_time_s = 0;           // wall time of this step's solve (substeps included) [s]
   OutletSpike outlet_spike;         // the outlet pressure spike and its width in cells
   InletTruncation inlet;            // what the truncated inlet costs the film (estimate)
@@ -45,6 +46,8 @@ struct ContactRunResult {
   double x_start_b = 0;     // [numerics] x_start_b of the case (the inlet end of the grid) [-]
   double inlet_temperature_k = 0;  // T0 of the oil and the bulk of both bodies [K]
   bool finite_peclet = false;      // effects.finite_peclet of the case
+  bool thermal = false;            // effects.thermal of the case
+  ContactSolids solids;            // thermal properties of bodies 1 and 2
   bool converged() const;   // every step usable
 };
 

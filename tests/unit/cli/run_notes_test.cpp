@@ -1,7 +1,7 @@
 // Notes that `tehl run` adds to its report: the outlet pressure spike that the grid does not
 // resolve (include/tehl/ehl/outlet_spike.hpp), the film lost to a truncated inlet
 // (include/tehl/ehl/inlet_truncation.hpp) and solids too slow for the high-speed surface
-// temperatures (docs/thermal.md "Open points").
+// temperatures (docs/thermal.md "Surface temperatures at any Peclet number").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -119,6 +119,36 @@ TEST(RunNotes, FinitePecletSurfacesNeedNoPecletNote) {
   EXPECT_NE(r.out.find("flash temperature (Blok, finite Peclet, with each step's mu)"),
             std::string::npos)
       << r.out;
+}
+
+// A thermal [contact] run gets the same note. Steel discs R1 = R2 = 20 mm at w = 100 kN/m:
+// b = sqrt(8 w R / (pi E')) = 0.10607 mm (R = 10 mm, E' = 226.4 GPa), kappa = 46 / (7850 x
+// 470) = 1.2468e-5 m^2/s; body 2 at 0.225 m/s: Pe = 0.225 b / (2 kappa) = 0.957.
+std::string SlowThermalDisc(bool finite_peclet) {
+  const std::string path = UniqueTempPath("slow_disc.toml");
+  std::ofstream(path) << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nspeed_1_m_s = 0.375\n"
+                         "speed_2_m_s = 0.225\nload_n_per_m = 1.0e5\n[lubricant]\nname = "
+                         "\"sae40\"\n[effects]\ntransient = false\nthermal = true\n"
+                         "non_newtonian = true\nfinite_peclet = "
+                      << (finite_peclet ? "true" : "false") << "\n[output]\ndirectory = \""
+                      << UniqueTempPath("out") << "\"\n";
+  return path;
+}
+
+TEST(RunNotes, ASlowDiscIsNotedInAThermalContactRun) {
+  const RunResult r = RunTehl("run -q '" + SlowThermalDisc(false) + "'");
+  ASSERT_TRUE(r.exited);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("note: the Peclet number u b / (2 kappa) of body 2 falls to 0.957 (at "
+                       "t = 0 s)"),
+            std::string::npos)
+      << r.out;
+  const RunResult f = RunTehl("run -q '" + SlowThermalDisc(true) + "'");
+  ASSERT_TRUE(f.exited);
+  ASSERT_EQ(f.exit_code, 0) << f.out << f.err;
+  EXPECT_EQ(f.out.find("Peclet number"), std::string::npos) << f.out;
+  EXPECT_NE(f.out.find("flash temperature (Blok, finite Peclet, with this mu)"), std::string::npos)
+      << f.out;
 }
 
 }  // namespace
