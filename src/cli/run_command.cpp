@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "scene/case_reader.hpp"
@@ -120,6 +122,50 @@ void NoteContactPeclet(const ContactRunResult& r) {
       "note: the Peclet number u b / (2 kappa) of body %d falls to %.3g (at t = %.4g s), below "
       "about %.0f: %s\n",
       lowest.body + 1, lowest.pe, r.steps[lowest.at].time_s, kHighPeclet, kPecletAdvice);
+}
+
+// Steps whose transient solve failed and whose film is the steady one at their time
+// ([numerics] failed_step = "steady_restart"): where they are, and why the first one failed.
+// `where` names each restarted step ("step 70 (s = 4.913 mm)").
+void NoteRestarts(const std::vector<std::string>& where,
+                  const std::string& first_reason,
+                  size_t time_steps) {
+  if (where.empty()) return;
+  constexpr size_t kListed = 8;
+  std::string list;
+  for (size_t i = 0; i < where.size() && i < kListed; ++i) list += (i ? ", " : "") + where[i];
+  if (where.size() > kListed) list += ", ...";
+  std::printf(
+      "note: %zu of %zu time steps did not converge; each such film is the steady one at its "
+      "time, and the run marched on from it ([numerics] failed_step = \"steady_restart\"; "
+      "\"stop\" ends the run there instead): %s. The first failure: %s\n",
+      where.size(), time_steps, list.c_str(), first_reason.c_str());
+}
+
+void NoteCycleRestarts(const MeshCycleResult& r) {
+  std::vector<std::string> where;
+  std::string first;
+  char buf[96];
+  for (size_t k = 0; k < r.steps.size(); ++k) {
+    if (!r.steps[k].restarted()) continue;
+    if (first.empty()) first = r.steps[k].restart_reason;
+    std::snprintf(buf, sizeof buf, "step %zu (s = %.4g mm)", k, r.steps[k].s_m * 1e3);
+    where.emplace_back(buf);
+  }
+  NoteRestarts(where, first, r.steps.empty() ? 0 : r.steps.size() - 1);
+}
+
+void NoteContactRestarts(const ContactRunResult& r) {
+  std::vector<std::string> where;
+  std::string first;
+  char buf[96];
+  for (size_t k = 0; k < r.steps.size(); ++k) {
+    if (!r.steps[k].restarted()) continue;
+    if (first.empty()) first = r.steps[k].restart_reason;
+    std::snprintf(buf, sizeof buf, "step %zu (t = %.4g s)", k, r.steps[k].time_s);
+    where.emplace_back(buf);
+  }
+  NoteRestarts(where, first, r.steps.empty() ? 0 : r.steps.size() - 1);
 }
 
 void NoteCycleSpikes(const MeshCycleResult& r, size_t converged_steps) {
@@ -238,6 +284,7 @@ int RunGear(const RunArgs& a) {
   NoteCyclePeclet(r, ok);
   NoteCycleSpikes(r, ok);
   NoteCycleInlet(r, ok);
+  NoteCycleRestarts(r);
   std::printf("wrote %s%s%s\n", r.hdf5_path.c_str(), r.csv_path.empty() ? "" : " and ",
               r.csv_path.c_str());
   if (!r.converged()) {
@@ -271,6 +318,7 @@ int RunContact(const RunArgs& a) {
     NoteContactInlet(last.inlet, r.x_start_b);
   }
   NoteContactPeclet(r);
+  NoteContactRestarts(r);
   std::printf("wrote %s and %s\n", r.profile_csv.c_str(), r.history_csv.c_str());
   if (!r.converged()) {
     std::fprintf(stderr, "tehl run: the solver did not converge: %s\n",

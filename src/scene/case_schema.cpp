@@ -141,19 +141,31 @@ SectionSpec EffectsSection() {
 }
 
 SectionSpec NumericsSection() {
-  return {"numerics", "grid, time stepping and solver settings", false, {
-    Integer("grid_points", "-", "513", "nodes across the contact", 17.0, 1e6),
-    Real("x_start_b", "-", "-4.5", "inlet end of the grid in Hertz half-widths b", -100.0, -1.0),
-    Real("x_end_b", "-", "1.5", "outlet end of the grid in Hertz half-widths b", 1.0, 50.0),
-    Integer("steps", "-", "0", "time steps from A to E; 0 = automatic", 0.0, 1e7),
-    Integer("upwind_order", "-", "2", "order of the Couette (wedge) term upwinding", 1.0, 2.0),
-    Text("time_scheme", "\"bdf2\"", "time discretization of d(rho h)/dt", {"bdf1", "bdf2"}),
-    Text("linear_solver", "\"auto\"", "Newton linear solver",
-         {"auto", "dense", "newton_krylov", "reused_lu"}),
-    Positive("newton_tolerance", "-", "1e-8", "relative residual at which Newton stops"),
-    Integer("max_newton_iterations", "-", "100", "Newton iterations per solve", 1.0, 10000.0),
-    Integer("film_nodes", "-", "11", "nodes across the film for the energy equation", 3.0, 201.0),
-  }};
+  return {
+      "numerics",
+      "grid, time stepping and solver settings",
+      false,
+      {
+          Integer("grid_points", "-", "513", "nodes across the contact", 17.0, 1e6),
+          Real("x_start_b", "-", "-4.5", "inlet end of the grid in Hertz half-widths b", -100.0,
+               -1.0),
+          Real("x_end_b", "-", "1.5", "outlet end of the grid in Hertz half-widths b", 1.0, 50.0),
+          Integer("steps", "-", "0", "time steps from A to E; 0 = automatic", 0.0, 1e7),
+          Integer("upwind_order", "-", "2", "order of the Couette (wedge) term upwinding", 1.0,
+                  2.0),
+          Text("time_scheme", "\"bdf2\"", "time discretization of d(rho h)/dt", {"bdf1", "bdf2"}),
+          Text("linear_solver", "\"auto\"", "Newton linear solver",
+               {"auto", "dense", "newton_krylov", "reused_lu"}),
+          Positive("newton_tolerance", "-", "1e-8", "relative residual at which Newton stops"),
+          Integer("max_newton_iterations", "-", "100", "Newton iterations per solve", 1.0, 10000.0),
+          Integer("film_nodes", "-", "11", "nodes across the film for the energy equation", 3.0,
+                  201.0),
+          Text(
+              "failed_step", "\"steady_restart\"",
+              "a time step that does not converge: stop the run there, or solve the steady film at "
+              "its time and march on from it (the step is flagged in the results)",
+              {"stop", "steady_restart"}),
+      }};
 }
 
 SectionSpec OutputSection() {

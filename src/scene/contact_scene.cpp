@@ -13,6 +13,7 @@
 #include "scene/contact_case.hpp"
 #include "scene/contact_csv.hpp"
 #include "scene/film_case.hpp"
+#include "scene/step_restart.hpp"
 #include "tehl/ehl/flash_temperature.hpp"
 #include "tehl/error.hpp"
 #include "tehl/units.hpp"
@@ -80,8 +81,9 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   using Clock = std::chrono::steady_clock;
   const ViscosityValue inlet_law = internal::InletViscosity(film);
   auto record = [&](double t, const ContactConditions& c, const LineContactSolver::Summary& s,
-                    Clock::time_point start) {
+                    Clock::time_point start, std::string restart_reason = {}) {
     ContactStepRecord rec;
+    rec.restart_reason = std::move(restart_reason);
     rec.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
     rec.time_s = t;
     rec.load_n_per_m = c.load_n_per_m;
@@ -123,8 +125,10 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
     rec.summary = s;
     result.steps.push_back(rec);
     if (!ro.quiet)
-      std::fprintf(stderr, "step %zu/%d  t = %.4g s  h_min = %.4g um  %s\n", result.steps.size(),
-                   in.steps + 1, t, rec.h_min_m * 1e6, s.BriefReport().c_str());
+      std::fprintf(stderr, "step %zu/%d  t = %.4g s  h_min = %.4g um  %s%s\n", result.steps.size(),
+                   in.steps + 1, t, rec.h_min_m * 1e6,
+                   rec.restarted() ? "steady restart of a failed step: " : "",
+                   s.BriefReport().c_str());
   };
   const double t0 = in.t.front();
   ContactConditions c = conditions(t0);
@@ -137,7 +141,8 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
       const double t = t0 + k * dt;
       c = conditions(t);
       start = Clock::now();
-      record(t, c, solver.Step(c, dt, &state), start);
+      internal::MarchedStep m = internal::StepOrRestart(solver, c, dt, &state, film.steady_restart);
+      record(t, c, m.summary, start, std::move(m.restart_reason));
       if (!result.steps.back().summary.usable()) break;
     }
   }

@@ -25,6 +25,9 @@ struct FilmCase {
   double x_start_b = -4.5, x_end_b = 1.5;         // grid ends in GridUnits lengths [-]
   std::shared_ptr<const SurfaceShape> surface1, surface2;  // null = smooth
   ContactSolids solids;                           // thermal properties of the two bodies
+  // [numerics] failed_step = "steady_restart": a failed time step is replaced by the steady
+  // film at its time (step_restart.hpp); false: the run stops at it.
+  bool steady_restart = true;
 };
 
 // The lubricant at the inlet state (p = 0, T0); deta_dp = 0 when the film is not

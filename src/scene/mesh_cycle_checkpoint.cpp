@@ -13,7 +13,7 @@
 namespace tehl::internal {
 namespace {
 
-constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '3'};
+constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '4'};
 constexpr char kRowsMagic[8] = {'T', 'E', 'H', 'L', 'R', 'O', 'W', '1'};
 constexpr std::int64_t kRowsHeaderBytes = sizeof kRowsMagic + sizeof(std::uint64_t);
 
@@ -145,6 +145,7 @@ void PutStep(Out& o, const MeshCycleStep& k) {
                    s.energy_balance_error})
     o.F(v);
   o.S(s.linear_solver);
+  o.S(k.restart_reason);
 }
 
 MeshCycleStep GetStep(In& in) {
@@ -166,6 +167,7 @@ MeshCycleStep GetStep(In& in) {
                     &s.energy_balance_error})
     *v = in.F();
   s.linear_solver = in.S();
+  k.restart_reason = in.S();
   return k;
 }
 

@@ -93,6 +93,7 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
   h5.SetAttribute("/", "step_rule", r.step_rule);
   h5.SetAttribute("/", "wall_time", r.wall_time_s, "s");
   h5.SetAttribute("/", "resumed_from_step", static_cast<double>(r.resumed_from_step), "-");
+  h5.SetAttribute("/", "steady_restarts", static_cast<double>(r.Restarts()), "-");
 
   for (const auto& c : CycleColumns())
     if (!c.thermal || r.thermal)
@@ -162,12 +163,14 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
     h5.SetAttribute("/profiles/T", "film_nodes", static_cast<double>(r.film_nodes), "-");
   }
 
-  std::vector<std::string> termination, message;
-  std::vector<int> iterations, substeps;
+  std::vector<std::string> termination, message, restart_reason;
+  std::vector<int> iterations, substeps, restarted;
   std::vector<double> residual, wall, load_error;
   for (const auto& k : r.steps) {
     termination.push_back(ToString(k.summary.termination));
     message.push_back(k.summary.message);
+    restarted.push_back(k.restarted() ? 1 : 0);
+    restart_reason.push_back(k.restart_reason);
     iterations.push_back(k.summary.total_iterations);
     substeps.push_back(k.summary.substeps);
     residual.push_back(k.summary.residual);
@@ -176,6 +179,11 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
   }
   h5.WriteStrings("/solver/termination", termination, "how each step's solve ended");
   h5.WriteStrings("/solver/message", message, "the solver's summary message per step");
+  h5.WriteInts("/solver/steady_restart", restarted,
+               "1: the transient step failed and the film is the steady one at this point "
+               "([numerics] failed_step)");
+  h5.WriteStrings("/solver/restart_reason", restart_reason,
+                  "the failed transient step's termination and message (empty: no restart)");
   h5.WriteInts("/solver/iterations", iterations, "Newton iterations per step (all stages)");
   h5.WriteInts("/solver/substeps", substeps, "time substeps a step needed");
   h5.WriteVector("/solver/residual", residual, "-", "final scaled residual max-norm");
@@ -220,6 +228,10 @@ void WriteMeshCycleCsv(const std::string& path, const MeshCycleResult& r) {
   std::vector<double> converged;
   for (const MeshCycleStep& k : r.steps) converged.push_back(k.summary.usable() ? 1.0 : 0.0);
   table.push_back({"converged", converged});
+  // 1 where the transient step failed and the row is the steady film at its point.
+  std::vector<double> restarted;
+  for (const MeshCycleStep& k : r.steps) restarted.push_back(k.restarted() ? 1.0 : 0.0);
+  table.push_back({"steady_restart", restarted});
   WriteCsvTable(path, table);
 }
 

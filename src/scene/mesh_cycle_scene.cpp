@@ -18,6 +18,7 @@
 #include "scene/mesh_cycle_checkpoint.hpp"
 #include "scene/mesh_cycle_output.hpp"
 #include "scene/mesh_cycle_plan.hpp"
+#include "scene/step_restart.hpp"
 #include "tehl/error.hpp"
 #include "tehl/gear/load_sharing.hpp"
 #include "tehl/gear/path_of_contact.hpp"
@@ -43,6 +44,11 @@ bool MeshCycleResult::converged() const {
   if (static_cast<int>(steps.size()) != planned_steps + 1) return false;
   return std::all_of(steps.begin(), steps.end(),
                      [](const MeshCycleStep& s) { return s.summary.usable(); });
+}
+
+int MeshCycleResult::Restarts() const {
+  return static_cast<int>(std::count_if(steps.begin(), steps.end(),
+                                        [](const MeshCycleStep& s) { return s.restarted(); }));
 }
 
 int MeshCycleResult::PitchStep() const {
@@ -226,8 +232,10 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
     return ContactConditions{st.contact.reduced_radius_m, st.contact.u1_m_s, st.contact.u2_m_s,
                              st.load_n_per_m, film.inlet_temperature_k};
   };
-  auto record = [&](const PathState& st, const LineContactSolver::Summary& sum) {
+  auto record = [&](const PathState& st, const LineContactSolver::Summary& sum,
+                    std::string restart_reason = {}) {
     MeshCycleStep k;
+    k.restart_reason = std::move(restart_reason);
     const ContactPoint& c = st.contact;
     k.s_m = c.s_m;
     k.time_s = c.time_s;
@@ -281,8 +289,11 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
     const MeshCycleStep& b = r.steps.back();
     std::fprintf(stderr, "%sstep %d/%d  s = %6.3f mm (%s)  h_min = %.4f um  %s  ~%.0f s left%s",
                  tty ? "\r" : "", done, r.planned_steps, b.s_m * 1e3, b.zone.c_str(),
-                 b.h_min_m * 1e6, sum.usable() ? "ok" : ToString(sum.termination).c_str(), left,
-                 tty ? "   " : "\n");
+                 b.h_min_m * 1e6,
+                 b.restarted()  ? "steady restart"
+                 : sum.usable() ? "ok"
+                                : ToString(sum.termination).c_str(),
+                 left, tty ? "   " : "\n");
   };
 
   // Resume from a checkpoint of the same case (docs/results.md, "Checkpoints and --resume").
@@ -330,7 +341,8 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
       st = cycle.At(s_steps[k], true);
       c = conditions(st);
       const double dt = (s_steps[k] - s_steps[k - 1]) / path.contact_speed_m_s();
-      record(st, solver.Step(c, dt, &state));
+      internal::MarchedStep m = internal::StepOrRestart(solver, c, dt, &state, film.steady_restart);
+      record(st, m.summary, std::move(m.restart_reason));
       if (!r.steps.back().summary.usable()) break;
       if (checkpoints && !checkpoints_off && ro.checkpoint_every > 0 &&
           k % ro.checkpoint_every == 0 && k + 1 < s_steps.size()) {

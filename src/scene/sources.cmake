@@ -12,6 +12,7 @@ list(APPEND TEHL_SOURCES
   src/scene/mesh_cycle_checkpoint.cpp
   src/scene/mesh_cycle_plan.cpp
   src/scene/mesh_cycle_scene.cpp
+  src/scene/step_restart.cpp
   src/scene/study_case_text.cpp
   src/scene/study_reader.cpp
   src/scene/study.cpp

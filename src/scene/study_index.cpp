@@ -143,6 +143,8 @@ SceneRow GearRow(const std::string& path) {
   if (h5.Exists("/cycle/dT_flash_blok"))
     r.flash_blok_max_k = Max(h5.Doubles("/cycle/dT_flash_blok"));
   r.wall_time_s = h5.DoubleAttribute("/", "wall_time");
+  if (h5.Exists("/solver/steady_restart"))  // files of earlier versions have none
+    for (double v : h5.Doubles("/solver/steady_restart")) r.steady_restarts += v;
   const bool ok = h5.StringAttribute("/", "converged") == "true";
   r.status = ok ? "ok" : "not_converged";
   if (!ok) {
@@ -181,7 +183,8 @@ SceneRow ContactRow(const std::string& path) {
   const size_t ih = col("h_min_m"), ic = col("h_c_m"), ip = col("p_max_pa"),
                it = col("termination");
   const size_t itm = find("t_max_k"), imu = find("mu"), iwt = find("wall_time_s"),
-               it1 = find("t1_max_k"), it2 = find("t2_max_k"), ifl = find("dT_flash_blok_k");
+               it1 = find("t1_max_k"), it2 = find("t2_max_k"), ifl = find("dT_flash_blok_k"),
+               irs = find("steady_restart");
   std::vector<double> h_min, h_c, p_max, t_max, mu, surface, flash;
   SceneRow r;
   r.status = "ok";
@@ -198,6 +201,7 @@ SceneRow ContactRow(const std::string& path) {
     if (it1 != none && it2 != none)
       surface.push_back(std::max(std::stod(f[it1]), std::stod(f[it2])));
     if (ifl != none) flash.push_back(std::stod(f[ifl]));
+    if (irs != none) r.steady_restarts += std::stod(f[irs]);
     if (f[it] != "converged") {
       r.status = "not_converged";
       r.message = f[it];
@@ -251,6 +255,10 @@ const std::vector<SummaryColumn>& SummaryColumns() {
        "maximum over the cycle of Blok's flash temperature rise with the film's mu (0: not in "
        "the result)",
        &SceneRow::flash_blok_max_k},
+      {"steady_restarts", "steady_restarts", "-",
+       "time steps that did not converge and were replaced by the steady film at their time "
+       "([numerics] failed_step; 0 in results of earlier versions)",
+       &SceneRow::steady_restarts},
   };
   return cols;
 }

@@ -37,6 +37,10 @@ struct ContactStepRecord {
   OutletSpike outlet_spike;         // the outlet pressure spike and its width in cells
   InletTruncation inlet;            // what the truncated inlet costs the film (estimate)
   LineContactSolver::Summary summary;
+  // Non-empty when the time step failed and its film is the steady one at its time
+  // ([numerics] failed_step = "steady_restart"): the failed step's termination and message.
+  std::string restart_reason;
+  bool restarted() const { return !restart_reason.empty(); }
 };
 
 struct ContactRunResult {

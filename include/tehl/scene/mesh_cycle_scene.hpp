@@ -55,6 +55,10 @@ struct MeshCycleStep {
   double c_rt = 0, c_ut = 0, c_wt = 0;  // R/R0, um/u0, w/w0 (seed 004 Fig. 3) [-]
   std::string zone;                     // "A-B", "B-D" or "D-E" (the segment the step ends in)
   LineContactSolver::Summary summary;
+  // Non-empty when the transient step failed and its film is the steady one at this point
+  // ([numerics] failed_step = "steady_restart"): the failed step's termination and message.
+  std::string restart_reason;
+  bool restarted() const { return !restart_reason.empty(); }
 };
 
 struct MeshCycleResult {
@@ -83,6 +87,7 @@ struct MeshCycleResult {
   bool already_complete = false;                // resume found a complete result: no steps
   bool converged() const;                       // every planned step solved and usable
   int PitchStep() const;                        // index of the step nearest to C
+  int Restarts() const;                         // steps whose film is a steady restart
   // The outlet pressure spike of each step's film (p_pa; FindOutletSpike), one per row.
   std::vector<OutletSpike> OutletSpikes() const;
   // What the truncated inlet costs each step's film (EstimateInletTruncation with the step's

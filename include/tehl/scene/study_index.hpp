@@ -31,6 +31,8 @@ struct SceneRow {
   double flash_blok_max_k = 0;    // max over the cycle of Blok's flash temperature rise [K]
                                   //   (0: not in the file)
   double wall_time_s = 0;         // the scene's run time [s]
+  double steady_restarts = 0;     // time steps replaced by the steady film at their time
+                                  //   ([numerics] failed_step = "steady_restart") [-]
   int steps = 0;                  // rows of the cycle table [-]
 };
 

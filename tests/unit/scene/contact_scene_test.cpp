@@ -257,6 +257,7 @@ TEST(ContactScene, IsothermalDiscRecordsTheInletTemperatureAndRollingFriction) {
                                          "t1_max_k",
                                          "t2_max_k",
                                          "dT_flash_blok_k",
+                                         "steady_restart",
                                          "termination"};
   EXPECT_EQ(steps.head, head);
   // Isothermal: the surfaces stay at the inlet temperature.

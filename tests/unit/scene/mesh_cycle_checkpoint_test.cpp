@@ -33,6 +33,7 @@ void AddStep(MeshCycleResult* r, int k) {
   s.zone = k < 5 ? "A-B" : "B-D";
   s.summary.iterations = k;
   s.summary.message = "step " + std::to_string(k);
+  if (k % 3 == 2) s.restart_reason = "coupling_not_converged: step " + std::to_string(k);
   r->steps.push_back(s);
   auto row = [&](double base) {
     std::vector<double> v(kNodes);
@@ -78,6 +79,7 @@ void ExpectSameRows(const MeshCycleResult& a, const MeshCycleResult& b) {
     EXPECT_EQ(a.steps[k].zone, b.steps[k].zone) << k;
     EXPECT_EQ(a.steps[k].summary.iterations, b.steps[k].summary.iterations) << k;
     EXPECT_EQ(a.steps[k].summary.message, b.steps[k].summary.message) << k;
+    EXPECT_EQ(a.steps[k].restart_reason, b.steps[k].restart_reason) << k;
   }
   EXPECT_EQ(a.p_pa, b.p_pa);
   EXPECT_EQ(a.h_m, b.h_m);

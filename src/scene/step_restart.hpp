@@ -1,0 +1,40 @@
+// A time step of a transient run (mesh cycle, [contact] time tables) with the fallback of
+// [numerics] failed_step = "steady_restart": when the step does not converge (after the
+// solver's own substeps), the film at the step's time is solved as a steady film from the
+// state before the step, and the transient marches on from it (BeginTransient: BDF1 for the
+// next step, then the case's scheme). The step is flagged with the failure it replaced, so a
+// result never passes a steady film off as the transient one.
+//
+// Why: a transient step can fail where the steady film does not, e.g. the Newtonian thermal
+// film right after B of the seed 004 cycle on 2049 nodes, whose squeeze spike heats faster
+// than the coupling can follow (docs/thermal.md, "The seed 004 cycle at full resolution");
+// stopping there loses the rest of the path, while the squeeze transient it drops has
+// decayed within a step or two (the steps after the restart match the transient ones).
+#pragma once
+
+#include <string>
+
+#include "tehl/ehl/line_contact_solver.hpp"
+
+namespace tehl::internal {
+
+struct MarchedStep {
+  // The step's summary, or that of the steady solve that replaced it (its wall time then
+  // includes the failed attempt).
+  LineContactSolver::Summary summary;
+  // Empty: the transient step converged (or failed with restart off, or the steady solve
+  // failed too: then `summary` is the step's, its message naming both failures). Otherwise
+  // the failed step's termination and message.
+  std::string restart_reason;
+};
+
+// Advances `state` by dt_s to the conditions c (LineContactSolver::Step), with the steady
+// fallback above when `steady_restart` is true. After a restart the solver's transient
+// history starts at the steady film.
+MarchedStep StepOrRestart(LineContactSolver& solver,
+                          const ContactConditions& c,
+                          double dt_s,
+                          FilmState* state,
+                          bool steady_restart);
+
+}  // namespace tehl::internal

@@ -1,0 +1,150 @@
+// [numerics] failed_step (src/scene/step_restart.hpp): a transient step that does not converge
+// either stops the run ("stop") or is replaced by the steady film at its time, flagged, and the
+// run marches on ("steady_restart", the default).
+//
+// The case is the seed 004 contact across B, where the load moves onto one tooth pair: the
+// conditions of steps 64..70 of the 2049-node thermal cycle (docs/thermal.md, "The seed 004
+// cycle at full resolution": step 70 fails there), as a [contact] run of two aluminium bronze
+// discs with the pinion's and the wheel's radii of curvature at s = 4.70 mm, SAE 40 at
+// 313.15 K, Newtonian and thermal, on 1025 nodes with 12 time steps. A step after the load
+// jump does not converge: the squeeze spike heats the Newtonian film faster than the
+// pressure/temperature coupling follows.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "support/csv_cells.hpp"
+#include "support/scratch_path.hpp"
+#include "tehl/scene/contact_scene.hpp"
+
+namespace tehl {
+namespace {
+namespace fs = std::filesystem;
+
+// Steps 64..70 of the 2049-node cycle: time since step 64 [s], load [N/m], pinion and wheel
+// surface speeds [m/s] (the cycle's own CSV; B lies between the second and third entries).
+constexpr double kTime[] = {
+    0, 2.036627e-05, 4.091775e-05, 6.146924e-05, 8.202072e-05, 1.025722e-04, 1.231237e-04};
+constexpr double kLoad[] = {68267.0, 68632.6, 116138.8, 116138.8, 116138.8, 116138.8, 116138.8};
+constexpr double kU1[] = {1.149347, 1.156692, 1.164105, 1.171517, 1.178929, 1.186342, 1.193754};
+constexpr double kU2[] = {1.288310, 1.285862, 1.283391, 1.280920, 1.278449, 1.275979, 1.273508};
+
+std::string Table(const double* v, int n) {
+  std::string s = "[";
+  char buf[32];
+  for (int i = 0; i < n; ++i) {
+    std::snprintf(buf, sizeof buf, "%.17g", v[i]);
+    s += (i ? ", " : "") + std::string(buf);
+  }
+  return s + "]";
+}
+
+// The case; steps = 0 gives the steady film at the table's load `w_steady` and speeds
+// `u1_steady`, `u2_steady` instead (same grid: the grid is sized by the largest load).
+std::string AcrossB(const fs::path& dir,
+                    const std::string& name,
+                    const std::string& failed_step,
+                    int steps,
+                    double w_steady = 0,
+                    double u1_steady = 0,
+                    double u2_steady = 0) {
+  const fs::path path = dir / (name + ".toml");
+  std::ofstream f(path);
+  f << "[contact]\nradius_1_m = 0.01119\nradius_2_m = 0.03669\n"
+    << "youngs_modulus_1_pa = 117e9\npoisson_ratio_1 = 0.34\n"
+    << "youngs_modulus_2_pa = 117e9\npoisson_ratio_2 = 0.34\n"
+    << "density_1_kg_m3 = 7890.0\ndensity_2_kg_m3 = 7890.0\n"
+    << "conductivity_1_w_mk = 55.0\nconductivity_2_w_mk = 55.0\n"
+    << "heat_capacity_1_j_kgk = 375.0\nheat_capacity_2_j_kgk = 375.0\n";
+  if (steps > 0) {
+    const int n = static_cast<int>(std::size(kTime));
+    f << "speed_1_m_s = " << kU1[0] << "\nspeed_2_m_s = " << kU2[0]
+      << "\nload_n_per_m = " << kLoad[0] << "\ntime_s = " << Table(kTime, n)
+      << "\nload_table_n_per_m = " << Table(kLoad, n) << "\nspeed_1_table_m_s = " << Table(kU1, n)
+      << "\nspeed_2_table_m_s = " << Table(kU2, n) << "\nsteps = " << steps << "\n";
+  } else {
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  "speed_1_m_s = %.17g\nspeed_2_m_s = %.17g\nload_n_per_m = %.17g\n", u1_steady,
+                  u2_steady, w_steady);
+    f << buf;
+  }
+  f << "[lubricant]\nname = \"sae40\"\ninlet_temperature_k = 313.15\n"
+    << "[effects]\nthermal = true\n"
+    << "[numerics]\ngrid_points = 1025\nfailed_step = \"" << failed_step << "\"\n";
+  return path.string();
+}
+
+ContactRunResult RunCase(const std::string& case_path, const fs::path& dir) {
+  ContactRunOptions o;
+  o.quiet = true;
+  o.output_dir = dir.string();
+  return RunContactCase(case_path, o);
+}
+
+int FirstRestart(const ContactRunResult& r) {
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    if (r.steps[k].restarted()) return static_cast<int>(k);
+  return -1;
+}
+
+TEST(StepRestart, AFailedStepIsReplacedByTheSteadyFilmAndTheRunGoesOn) {
+  const fs::path dir = testing::ScratchPath("tehl_step_restart", "across_b");
+  fs::create_directories(dir);
+
+  // "stop": the run ends at the failed step, nothing is flagged as restarted.
+  const ContactRunResult stopped = RunCase(AcrossB(dir, "stop", "stop", 12), dir);
+  ASSERT_FALSE(stopped.converged());
+  const int failed = static_cast<int>(stopped.steps.size()) - 1;
+  ASSERT_GE(failed, 3) << "the jump comes after the second table entry";
+  const LineContactSolver::Summary& why = stopped.steps.back().summary;
+  EXPECT_FALSE(why.usable());
+  EXPECT_EQ(FirstRestart(stopped), -1);
+
+  // The default: the same step fails, its film is the steady one, and every later step is a
+  // converged transient step again.
+  const ContactRunResult r = RunCase(AcrossB(dir, "restart", "steady_restart", 12), dir);
+  ASSERT_TRUE(r.converged()) << r.steps.back().summary.message;
+  ASSERT_EQ(r.steps.size(), 13u);
+  ASSERT_EQ(FirstRestart(r), failed);
+  const ContactStepRecord& k = r.steps[failed];
+  EXPECT_EQ(k.restart_reason, ToString(why.termination) + ": " + why.message);
+  EXPECT_TRUE(k.summary.usable());
+  for (size_t j = failed + 1; j < r.steps.size(); ++j)
+    EXPECT_TRUE(r.steps[j].summary.usable() && !r.steps[j].restarted()) << "step " << j;
+
+  // The steps CSV flags that row, and only it.
+  const auto cells = testing::ReadCsvCells(r.history_csv);
+  ASSERT_EQ(cells.size(), r.steps.size() + 1);
+  const auto col = std::find(cells[0].begin(), cells[0].end(), "steady_restart") - cells[0].begin();
+  ASSERT_LT(static_cast<size_t>(col), cells[0].size());
+  for (size_t j = 0; j < r.steps.size(); ++j)
+    EXPECT_EQ(std::stod(cells[j + 1][col]), static_cast<int>(j) == failed ? 1.0 : 0.0) << j;
+
+  // The restarted row is the steady film at its time: a steady run under the same conditions
+  // gives the same film up to the thermal coupling's tolerance (it stops at 0.01 K per
+  // iteration; with beta = 0.046 1/K of SAE 40 and h ~ eta^0.7, 0.01 K moves h by about
+  // 3e-4, and T_max by that 0.01 K give or take a few iterations' worth).
+  const ContactRunResult steady =
+      RunCase(AcrossB(dir, "steady", "steady_restart", 0, k.load_n_per_m, k.u1_m_s, k.u2_m_s), dir);
+  ASSERT_TRUE(steady.converged());
+  const ContactStepRecord& s = steady.steps.back();
+  EXPECT_NEAR(k.h_c_m / s.h_c_m, 1.0, 1e-3);
+  EXPECT_NEAR(k.h_min_m / s.h_min_m, 1.0, 1e-3);
+  EXPECT_NEAR(k.p_max_pa / s.p_max_pa, 1.0, 1e-3);
+  EXPECT_NEAR(k.t_max_k, s.t_max_k, 0.1);
+  std::printf(
+      "failed step %d (t = %.4g s): restarted h_c %.6g m, T_max %.3f K; steady h_c %.6g m, "
+      "T_max %.3f K; next step h_c %.6g m\n",
+      failed, k.time_s, k.h_c_m, k.t_max_k, s.h_c_m, s.t_max_k, r.steps[failed + 1].h_c_m);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tehl
