@@ -46,7 +46,7 @@ if [ "${TEHL_CI_SKIP_ASAN:-0}" != 1 ]; then
   # the sanitizer run). They exercise the same code as the tests that stay, which include a
   # thermal and an isothermal mesh cycle with checkpoints; scripts/test.sh runs them all.
   LONG='ThermalCycleSeed004|Bdf[12]Is|MeshCycleDynamic.Seed004|M5000L25|MovingWaviness'
-  LONG="$LONG|MeshCycleSeed004|SameFilmFromPerturbed|TransientLoadChange|Sweep.Index|HardCase|SlidingNewtonianDisc|ThermalCoupling"
+  LONG="$LONG|MeshCycleSeed004|SameFilmFromPerturbed|TransientLoadChange|Sweep.Index|HardCase|SlidingNewtonianDisc|ThermalCoupling|StepRestart"
   ctest --test-dir build-san --output-on-failure -j "$JOBS" -LE 'slow|install|mpi' -E "$LONG"
   unset ASAN_OPTIONS UBSAN_OPTIONS
 fi

@@ -10,6 +10,7 @@
 // jump does not converge: the squeeze spike heats the Newtonian film faster than the
 // pressure/temperature coupling follows.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,9 @@
 #include "support/csv_cells.hpp"
 #include "support/scratch_path.hpp"
 #include "tehl/scene/contact_scene.hpp"
+#include "tehl/scene/mesh_cycle_scene.hpp"
+#include "unit/cli/run_tehl.hpp"
+#include "unit/io/hdf5_read.hpp"
 
 namespace tehl {
 namespace {
@@ -143,6 +147,95 @@ TEST(StepRestart, AFailedStepIsReplacedByTheSteadyFilmAndTheRunGoesOn) {
       "failed step %d (t = %.4g s): restarted h_c %.6g m, T_max %.3f K; steady h_c %.6g m, "
       "T_max %.3f K; next step h_c %.6g m\n",
       failed, k.time_s, k.h_c_m, k.t_max_k, s.h_c_m, s.t_max_k, r.steps[failed + 1].h_c_m);
+  fs::remove_all(dir);
+}
+
+// The thermal seed 004 cycle on 513 nodes with 600 steps (cases/seed004_sae40.toml with
+// [numerics] steps = 600): one step after B does not converge (docs/thermal.md, "The seed 004
+// cycle at full resolution"). `tehl run` completes the cycle (exit 0), notes the restart, and
+// every result names the restarted step: /solver/steady_restart and /solver/restart_reason,
+// the root's steady_restarts, the CSV's steady_restart column. With failed_step = "stop" the
+// same cycle ends at that step.
+std::vector<std::string> Hdf5Strings(hid_t file, const std::string& path) {
+  std::vector<std::string> out;
+  const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
+  if (set < 0) return out;
+  const hid_t space = H5Dget_space(set), type = H5Dget_type(set);
+  std::vector<char*> p(static_cast<size_t>(H5Sget_simple_extent_npoints(space)), nullptr);
+  if (!p.empty() && H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0) {
+    for (char* c : p) out.emplace_back(c ? c : "");
+    H5Dvlen_reclaim(type, space, H5P_DEFAULT, p.data());
+  }
+  H5Tclose(type);
+  H5Sclose(space);
+  H5Dclose(set);
+  return out;
+}
+
+std::string SeedCycle(const fs::path& dir, const std::string& name, const std::string& failed) {
+  std::ifstream in(std::string(TEHL_SOURCE_DIR) + "/cases/seed004_sae40.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string grid = "grid_points = 513\n";
+  const size_t at = text.find(grid);
+  EXPECT_NE(at, std::string::npos) << "the seed 004 case sets grid_points = 513";
+  text.replace(at, grid.size(), grid + "steps = 600\nfailed_step = \"" + failed + "\"\n");
+  const fs::path path = dir / (name + ".toml");
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+TEST(StepRestart, ACycleNamesItsRestartedStepInEveryResult) {
+  const fs::path dir = testing::ScratchPath("tehl_step_restart", "cycle");
+  fs::create_directories(dir);
+  const testing::RunResult run = testing::RunTehl(
+      "run -q '" + SeedCycle(dir, "restart", "steady_restart") + "' -o '" + dir.string() + "'");
+  ASSERT_TRUE(run.exited);
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("time steps did not converge; each such film is the steady one"),
+            std::string::npos)
+      << run.out;
+
+  const hid_t f = H5Fopen((dir / "restart.h5").string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  EXPECT_EQ(testing::Hdf5StringAttribute(f, "/", "converged"), "true");
+  const std::vector<double> flag = testing::Hdf5Doubles(f, "/solver/steady_restart");
+  const std::vector<std::string> reason = Hdf5Strings(f, "/solver/restart_reason");
+  const std::vector<std::string> term = Hdf5Strings(f, "/solver/termination");
+  double restarts_attr = -1;
+  {
+    const hid_t a = H5Aopen_by_name(f, "/", "steady_restarts", H5P_DEFAULT, H5P_DEFAULT);
+    ASSERT_GE(a, 0);
+    H5Aread(a, H5T_NATIVE_DOUBLE, &restarts_attr);
+    H5Aclose(a);
+  }
+  H5Fclose(f);
+  ASSERT_EQ(flag.size(), 601u);
+  ASSERT_EQ(reason.size(), flag.size());
+  int restarts = 0, first = -1;
+  for (size_t k = 0; k < flag.size(); ++k) {
+    EXPECT_EQ(term[k], "converged") << k;
+    EXPECT_EQ(reason[k].empty(), flag[k] == 0.0) << k << ": " << reason[k];
+    if (flag[k] == 0.0) continue;
+    ++restarts;
+    if (first < 0) first = static_cast<int>(k);
+    EXPECT_NE(reason[k].find("coupling"), std::string::npos) << reason[k];
+  }
+  EXPECT_GE(restarts, 1);
+  EXPECT_EQ(restarts_attr, restarts);
+  const auto cells = testing::ReadCsvCells((dir / "restart_cycle.csv").string());
+  ASSERT_EQ(cells.size(), flag.size() + 1);
+  ASSERT_EQ(cells[0].back(), "steady_restart");
+  for (size_t k = 0; k < flag.size(); ++k) EXPECT_EQ(std::stod(cells[k + 1].back()), flag[k]) << k;
+
+  MeshCycleRunOptions o;
+  o.quiet = true;
+  o.write_files = false;
+  const MeshCycleResult stopped = RunMeshCycle(SeedCycle(dir, "stop", "stop"), o);
+  EXPECT_FALSE(stopped.converged());
+  EXPECT_EQ(static_cast<int>(stopped.steps.size()) - 1, first);
+  EXPECT_EQ(stopped.Restarts(), 0);
+  std::printf("restarted steps: %d, the first at step %d; \"stop\" ends at step %zu\n", restarts,
+              first, stopped.steps.size() - 1);
   fs::remove_all(dir);
 }
 

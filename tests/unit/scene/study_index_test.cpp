@@ -52,6 +52,7 @@ TEST(StudyIndex, ContactStepsWithoutTheNewColumnsGiveZeros) {
   EXPECT_EQ(r.wall_time_s, 0.0);
   EXPECT_EQ(r.t_surface_max_k, 0.0);
   EXPECT_EQ(r.flash_blok_max_k, 0.0);
+  EXPECT_EQ(r.steady_restarts, 0.0);
 }
 
 // The surface and flash temperature columns (docs/results.md): the hottest surface of either
@@ -75,6 +76,27 @@ TEST(StudyIndex, ContactStepsWithSurfaceAndFlashColumnsAreSummarized) {
   ASSERT_EQ(back.size(), 1u);
   EXPECT_EQ(back[0].t_surface_max_k, 325.0);
   EXPECT_EQ(back[0].flash_blok_max_k, 4.0);
+}
+
+// The steady_restart column ([numerics] failed_step): the index counts the restarted steps
+// (0 + 1 + 1 = 2) and keeps the status ok (every row converged); a file without the column
+// counts 0 (the first test above).
+TEST(StudyIndex, ContactStepsCountTheirSteadyRestarts) {
+  StudyScene scene;
+  const Study s = OneSceneStudy(
+      "restart_steps",
+      "t_s,w_n_per_m,u1_m_s,u2_m_s,h_min_m,h_c_m,p_max_pa,t1_max_k,t2_max_k,dT_flash_blok_k,"
+      "steady_restart,termination\n"
+      "0.0,1e5,1.2,0.8,3.0e-7,4.0e-7,6.0e8,321,318,2.5,0,converged\n"
+      "1e-4,1e5,1.2,0.8,2.9e-7,3.9e-7,6.1e8,325,324,4.0,1,converged\n"
+      "2e-4,1e5,1.2,0.8,2.9e-7,3.9e-7,6.1e8,325,324,4.0,1,converged\n",
+      &scene);
+  const SceneRow r = ReadSceneRow(s, scene);
+  EXPECT_EQ(r.status, "ok");
+  EXPECT_EQ(r.steady_restarts, 2.0);
+  const std::vector<SceneRow> back = SceneRowsFromText(SceneRowsToText({r}));
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(back[0].steady_restarts, 2.0);
 }
 
 // The new columns: T_max the largest, mu mean and max, wall time the sum over the steps.
