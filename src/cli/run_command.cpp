@@ -126,46 +126,31 @@ void NoteContactPeclet(const ContactRunResult& r) {
 
 // Steps whose transient solve failed and whose film is the steady one at their time
 // ([numerics] failed_step = "steady_restart"): where they are, and why the first one failed.
-// `where` names each restarted step ("step 70 (s = 4.913 mm)").
-void NoteRestarts(const std::vector<std::string>& where,
-                  const std::string& first_reason,
-                  size_t time_steps) {
-  if (where.empty()) return;
+// `where(k, step)` names step k ("step 70 (s = 4.913 mm)").
+template <typename Step, typename Where>
+void NoteRestarts(const std::vector<Step>& steps, Where where) {
   constexpr size_t kListed = 8;
-  std::string list;
-  for (size_t i = 0; i < where.size() && i < kListed; ++i) list += (i ? ", " : "") + where[i];
-  if (where.size() > kListed) list += ", ...";
+  size_t count = 0;
+  std::string list, first;
+  for (size_t k = 0; k < steps.size(); ++k) {
+    if (!steps[k].restarted()) continue;
+    if (count == 0) first = steps[k].restart_reason;
+    if (count < kListed) list += (count ? ", " : "") + where(k, steps[k]);
+    ++count;
+  }
+  if (count == 0) return;
+  if (count > kListed) list += ", ...";
   std::printf(
       "note: %zu of %zu time steps did not converge; each such film is the steady one at its "
       "time, and the run marched on from it ([numerics] failed_step = \"steady_restart\"; "
       "\"stop\" ends the run there instead): %s. The first failure: %s\n",
-      where.size(), time_steps, list.c_str(), first_reason.c_str());
+      count, steps.size() - 1, list.c_str(), first.c_str());
 }
 
-void NoteCycleRestarts(const MeshCycleResult& r) {
-  std::vector<std::string> where;
-  std::string first;
+std::string Where(const char* format, size_t k, double value) {
   char buf[96];
-  for (size_t k = 0; k < r.steps.size(); ++k) {
-    if (!r.steps[k].restarted()) continue;
-    if (first.empty()) first = r.steps[k].restart_reason;
-    std::snprintf(buf, sizeof buf, "step %zu (s = %.4g mm)", k, r.steps[k].s_m * 1e3);
-    where.emplace_back(buf);
-  }
-  NoteRestarts(where, first, r.steps.empty() ? 0 : r.steps.size() - 1);
-}
-
-void NoteContactRestarts(const ContactRunResult& r) {
-  std::vector<std::string> where;
-  std::string first;
-  char buf[96];
-  for (size_t k = 0; k < r.steps.size(); ++k) {
-    if (!r.steps[k].restarted()) continue;
-    if (first.empty()) first = r.steps[k].restart_reason;
-    std::snprintf(buf, sizeof buf, "step %zu (t = %.4g s)", k, r.steps[k].time_s);
-    where.emplace_back(buf);
-  }
-  NoteRestarts(where, first, r.steps.empty() ? 0 : r.steps.size() - 1);
+  std::snprintf(buf, sizeof buf, format, k, value);
+  return buf;
 }
 
 void NoteCycleSpikes(const MeshCycleResult& r, size_t converged_steps) {
@@ -284,7 +269,9 @@ int RunGear(const RunArgs& a) {
   NoteCyclePeclet(r, ok);
   NoteCycleSpikes(r, ok);
   NoteCycleInlet(r, ok);
-  NoteCycleRestarts(r);
+  NoteRestarts(r.steps, [](size_t k, const MeshCycleStep& s) {
+    return Where("step %zu (s = %.4g mm)", k, s.s_m * 1e3);
+  });
   std::printf("wrote %s%s%s\n", r.hdf5_path.c_str(), r.csv_path.empty() ? "" : " and ",
               r.csv_path.c_str());
   if (!r.converged()) {
@@ -318,7 +305,9 @@ int RunContact(const RunArgs& a) {
     NoteContactInlet(last.inlet, r.x_start_b);
   }
   NoteContactPeclet(r);
-  NoteContactRestarts(r);
+  NoteRestarts(r.steps, [](size_t k, const ContactStepRecord& s) {
+    return Where("step %zu (t = %.4g s)", k, s.time_s);
+  });
   std::printf("wrote %s and %s\n", r.profile_csv.c_str(), r.history_csv.c_str());
   if (!r.converged()) {
     std::fprintf(stderr, "tehl run: the solver did not converge: %s\n",

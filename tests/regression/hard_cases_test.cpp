@@ -187,25 +187,6 @@ herr_t CollectDataset(hid_t, const char* name, const H5O_info_t* info, void* out
   return 0;
 }
 
-std::vector<std::string> Hdf5Strings(hid_t file, const std::string& path) {
-  std::vector<std::string> out;
-  const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
-  if (set < 0) return out;
-  const hid_t space = H5Dget_space(set);
-  const hssize_t n = H5Sget_simple_extent_npoints(space);
-  const hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, H5T_VARIABLE);
-  std::vector<char*> buf(n > 0 ? n : 0, nullptr);
-  if (n > 0 && H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()) >= 0) {
-    for (char* c : buf) out.push_back(c ? c : "");
-    H5Dvlen_reclaim(type, space, H5P_DEFAULT, buf.data());
-  }
-  H5Tclose(type);
-  H5Sclose(space);
-  H5Dclose(set);
-  return out;
-}
-
 struct CycleRun {
   MeshCycleResult r;
   bool ran = false;
@@ -280,8 +261,8 @@ void ExpectCycleConvergedOrDiagnosed(const CycleRun& run,
   const hid_t f = H5Fopen(r.hdf5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(f, 0) << r.hdf5_path;
   EXPECT_EQ(testing::Hdf5StringAttribute(f, "/", "converged"), r.converged() ? "true" : "false");
-  const std::vector<std::string> term = Hdf5Strings(f, "/solver/termination");
-  const std::vector<std::string> msg = Hdf5Strings(f, "/solver/message");
+  const std::vector<std::string> term = testing::Hdf5Strings(f, "/solver/termination");
+  const std::vector<std::string> msg = testing::Hdf5Strings(f, "/solver/message");
   EXPECT_EQ(term.size(), r.steps.size());
   EXPECT_EQ(msg.size(), r.steps.size());
   if (!term.empty() && !msg.empty()) {

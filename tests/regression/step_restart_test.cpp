@@ -156,22 +156,6 @@ TEST(StepRestart, AFailedStepIsReplacedByTheSteadyFilmAndTheRunGoesOn) {
 // every result names the restarted step: /solver/steady_restart and /solver/restart_reason,
 // the root's steady_restarts, the CSV's steady_restart column. With failed_step = "stop" the
 // same cycle ends at that step.
-std::vector<std::string> Hdf5Strings(hid_t file, const std::string& path) {
-  std::vector<std::string> out;
-  const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
-  if (set < 0) return out;
-  const hid_t space = H5Dget_space(set), type = H5Dget_type(set);
-  std::vector<char*> p(static_cast<size_t>(H5Sget_simple_extent_npoints(space)), nullptr);
-  if (!p.empty() && H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0) {
-    for (char* c : p) out.emplace_back(c ? c : "");
-    H5Dvlen_reclaim(type, space, H5P_DEFAULT, p.data());
-  }
-  H5Tclose(type);
-  H5Sclose(space);
-  H5Dclose(set);
-  return out;
-}
-
 std::string SeedCycle(const fs::path& dir, const std::string& name, const std::string& failed) {
   std::ifstream in(std::string(TEHL_SOURCE_DIR) + "/cases/seed004_sae40.toml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -199,8 +183,8 @@ TEST(StepRestart, ACycleNamesItsRestartedStepInEveryResult) {
   ASSERT_GE(f, 0);
   EXPECT_EQ(testing::Hdf5StringAttribute(f, "/", "converged"), "true");
   const std::vector<double> flag = testing::Hdf5Doubles(f, "/solver/steady_restart");
-  const std::vector<std::string> reason = Hdf5Strings(f, "/solver/restart_reason");
-  const std::vector<std::string> term = Hdf5Strings(f, "/solver/termination");
+  const std::vector<std::string> reason = testing::Hdf5Strings(f, "/solver/restart_reason");
+  const std::vector<std::string> term = testing::Hdf5Strings(f, "/solver/termination");
   double restarts_attr = -1;
   {
     const hid_t a = H5Aopen_by_name(f, "/", "steady_restarts", H5P_DEFAULT, H5P_DEFAULT);

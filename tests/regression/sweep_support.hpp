@@ -32,22 +32,6 @@ struct IndexTable {
   std::vector<std::string> status, result;
 };
 
-inline std::vector<std::string> Hdf5StringsOf(hid_t file, const std::string& path) {
-  std::vector<std::string> out;
-  const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
-  if (set < 0) return out;
-  const hid_t space = H5Dget_space(set), type = H5Dget_type(set);
-  std::vector<char*> p(H5Sget_simple_extent_npoints(space), nullptr);
-  if (!p.empty() && H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0) {
-    for (char* s : p) out.emplace_back(s ? s : "");
-    H5Dvlen_reclaim(type, space, H5P_DEFAULT, p.data());
-  }
-  H5Tclose(type);
-  H5Sclose(space);
-  H5Dclose(set);
-  return out;
-}
-
 inline std::vector<double> Hdf5IntsAsDoubles(hid_t file, const std::string& path) {
   return Hdf5Doubles(file, path);  // H5Dread converts the stored int32 to double
 }
@@ -66,8 +50,8 @@ inline IndexTable ReadIndex(const std::string& index_h5) {
   t.t_max_max = Hdf5Doubles(f, "/summary/T_max_max");
   t.mu_mean = Hdf5Doubles(f, "/summary/mu_mean");
   t.mu_max = Hdf5Doubles(f, "/summary/mu_max");
-  t.status = Hdf5StringsOf(f, "/status");
-  t.result = Hdf5StringsOf(f, "/result");
+  t.status = Hdf5Strings(f, "/status");
+  t.result = Hdf5Strings(f, "/result");
   H5Fclose(f);
   return t;
 }

@@ -53,6 +53,24 @@ inline std::string Hdf5StringAttribute(hid_t file,
   return out;
 }
 
+// A 1-D dataset of variable-length strings (empty when absent).
+inline std::vector<std::string> Hdf5Strings(hid_t file, const std::string& path) {
+  std::vector<std::string> out;
+  const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
+  if (set < 0) return out;
+  const hid_t space = H5Dget_space(set), type = H5Dget_type(set);
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  std::vector<char*> p(n > 0 ? static_cast<size_t>(n) : 0, nullptr);
+  if (!p.empty() && H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0) {
+    for (char* c : p) out.emplace_back(c ? c : "");
+    H5Dvlen_reclaim(type, space, H5P_DEFAULT, p.data());
+  }
+  H5Tclose(type);
+  H5Sclose(space);
+  H5Dclose(set);
+  return out;
+}
+
 // A scalar variable-length string dataset.
 inline std::string Hdf5Text(hid_t file, const std::string& path) {
   const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
