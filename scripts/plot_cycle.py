@@ -41,6 +41,21 @@ def mark_points(ax, cyc, mm):
                 ha="center", fontsize=8, color="0.3")
 
 
+def restarted_steps(f):
+    """Steps whose film is the steady one that replaced a failed time step
+    (/solver/steady_restart; absent in older files)."""
+    if "solver/steady_restart" not in f:
+        return []
+    return [int(k) for k in np.flatnonzero(f["solver/steady_restart"][:])]
+
+
+def mark_restarts(ax, s, restarts):
+    """A red dotted line at each restarted step (labelled once)."""
+    for i, k in enumerate(restarts):
+        ax.axvline(s[k], color="C3", lw=0.8, ls=":",
+                   label="steady restart of a failed step" if i == 0 else None)
+
+
 def nearest(s, target):
     return int(np.argmin(np.abs(s - target)))
 
@@ -93,6 +108,11 @@ def main():
     cyc = f["cycle"]
     mm, um = 1e3, 1e6
     s = cyc["s"][:] * mm
+    restarts = restarted_steps(f)
+    if restarts:
+        listed = ", ".join(f"{k} (s = {s[k]:.3f} mm)" for k in restarts[:8])
+        print(f"note: {a.result}: {len(restarts)} step(s) did not converge and show the steady "
+              f"film at their point, marked by red dotted lines: {listed}", file=sys.stderr)
     written = []
 
     # Fig. 3: the dimensionless curvature, speed and load along the path.
@@ -149,6 +169,7 @@ def main():
     ap_.set_xlabel("s, distance from A along the line of action [mm]")
     for axis in (ah, ap_):
         mark_points(axis, cyc, mm)
+        mark_restarts(axis, s, restarts)
         axis.grid(alpha=0.3)
         axis.legend(fontsize=8)
     ah.set_title(f"{name}: film thickness and pressure along the path", fontsize=10)
@@ -180,6 +201,7 @@ def main():
         af.set_xlabel("s, distance from A along the line of action [mm]")
         for axis in (at, af):
             mark_points(axis, cyc, mm)
+            mark_restarts(axis, s, restarts)
             axis.grid(alpha=0.3)
             axis.legend(fontsize=8, loc="upper center")
         srr.legend(fontsize=8, loc="upper right")

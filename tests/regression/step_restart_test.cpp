@@ -211,6 +211,15 @@ TEST(StepRestart, ACycleNamesItsRestartedStepInEveryResult) {
   ASSERT_EQ(cells[0].back(), "steady_restart");
   for (size_t k = 0; k < flag.size(); ++k) EXPECT_EQ(std::stod(cells[k + 1].back()), flag[k]) << k;
 
+  // `tehl plot` lists the restarted step and marks it on the figures along the path.
+  const testing::RunResult plot = testing::RunTehl("plot '" + (dir / "restart.h5").string() +
+                                                   "' -o '" + (dir / "png").string() + "'");
+  ASSERT_TRUE(plot.exited);
+  EXPECT_EQ(plot.exit_code, 0) << plot.err;
+  EXPECT_NE(plot.err.find("1 step(s) did not converge and show the steady film"), std::string::npos)
+      << plot.err;
+  EXPECT_TRUE(fs::exists(dir / "png" / "restart_thermal.png"));
+
   MeshCycleRunOptions o;
   o.quiet = true;
   o.write_files = false;
