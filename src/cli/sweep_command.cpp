@@ -3,6 +3,7 @@
 // round-robin: scene i on rank i mod K); rank 0 writes the index once every rank is done.
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "cli/sweep_mpi.hpp"
@@ -60,9 +61,13 @@ int RunSweep(const SweepArgs& a) {
   so.resume = a.resume;
   if (!a.quiet)
     so.on_scene = [&](const SceneRow& r, int done, int total) {
-      std::fprintf(stderr, "%s[%d/%d] %s %s%s (%.1f s)\n",
-                   mpi.size() > 1 ? ("rank " + std::to_string(mpi.rank()) + " ").c_str() : "",
-                   done, total, study.scenes[r.scene].name.c_str(), r.status.c_str(),
+      const std::string restarts =
+          r.steady_restarts > 0 ? ", " + std::to_string(static_cast<int>(r.steady_restarts)) +
+                                      " step(s) restarted from the steady film"
+                                : "";
+      std::fprintf(stderr, "%s[%d/%d] %s %s%s%s (%.1f s)\n",
+                   mpi.size() > 1 ? ("rank " + std::to_string(mpi.rank()) + " ").c_str() : "", done,
+                   total, study.scenes[r.scene].name.c_str(), r.status.c_str(), restarts.c_str(),
                    r.computed ? "" : ", resumed", r.wall_time_s);
     };
   const std::vector<SceneRow> rows = RunStudyScenes(study, mine, so);
@@ -71,15 +76,21 @@ int RunSweep(const SweepArgs& a) {
   if (mpi.rank() != 0) return kExitOk;
   const std::vector<SceneRow> gathered = SceneRowsFromText(all);
   const auto paths = WriteStudyIndex(study, gathered);
-  int ok = 0, not_converged = 0, failed = 0, resumed = 0;
+  int ok = 0, not_converged = 0, failed = 0, resumed = 0, restarted = 0;
   for (const auto& r : gathered) {
     ok += r.status == "ok";
+    restarted += r.steady_restarts > 0;
     not_converged += r.status == "not_converged";
     failed += r.status.rfind("failed", 0) == 0;
     resumed += !r.computed;
   }
   std::printf("%zu scenes: %d ok, %d not converged, %d failed (%d read back by --resume)\n",
               gathered.size(), ok, not_converged, failed, resumed);
+  if (restarted > 0)
+    std::printf(
+        "note: %d scene(s) have time steps that did not converge and were replaced by the "
+        "steady film at their time (index column steady_restarts; [numerics] failed_step)\n",
+        restarted);
   std::printf("wrote %s and %s\n", paths[0].c_str(), paths[1].c_str());
   return ok == static_cast<int>(gathered.size()) ? kExitOk : kExitNotConverged;
 }

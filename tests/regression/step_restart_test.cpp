@@ -92,6 +92,39 @@ ContactRunResult RunCase(const std::string& case_path, const fs::path& dir) {
   return RunContactCase(case_path, o);
 }
 
+// The index of a study over failed_step on the case across B (`tehl sweep`): the "stop" scene
+// is not converged, the "steady_restart" scene is ok with one restarted step, and the sweep's
+// summary says so.
+TEST(StepRestart, AStudyIndexCountsTheRestartedSteps) {
+  const fs::path dir = testing::ScratchPath("tehl_step_restart", "study");
+  fs::create_directories(dir);
+  AcrossB(dir, "base", "stop", 12);
+  const fs::path study = dir / "failed_step.toml";
+  std::ofstream(study) << "[study]\nbase = \"base.toml\"\noutput = \"" << (dir / "out").string()
+                       << "\"\n[[vary]]\nkey = \"numerics.failed_step\"\n"
+                       << "values = [\"stop\", \"steady_restart\"]\n";
+  const testing::RunResult run = testing::RunTehl("sweep -q -j 2 '" + study.string() + "'");
+  ASSERT_TRUE(run.exited);
+  EXPECT_EQ(run.exit_code, 1) << run.err;  // the "stop" scene did not converge
+  EXPECT_NE(run.out.find("2 scenes: 1 ok, 1 not converged"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("note: 1 scene(s) have time steps that did not converge"),
+            std::string::npos)
+      << run.out;
+  const auto cells = testing::ReadCsvCells((dir / "out" / "index.csv").string());
+  ASSERT_EQ(cells.size(), 3u);
+  auto col = [&](const std::string& name) {
+    const auto it = std::find(cells[0].begin(), cells[0].end(), name);
+    EXPECT_NE(it, cells[0].end()) << name;
+    return static_cast<size_t>(it - cells[0].begin());
+  };
+  const size_t status = col("status"), restarts = col("steady_restarts");
+  EXPECT_EQ(cells[1][status], "not_converged");
+  EXPECT_EQ(std::stod(cells[1][restarts]), 0.0);
+  EXPECT_EQ(cells[2][status], "ok");
+  EXPECT_EQ(std::stod(cells[2][restarts]), 1.0);
+  fs::remove_all(dir);
+}
+
 int FirstRestart(const ContactRunResult& r) {
   for (size_t k = 0; k < r.steps.size(); ++k)
     if (r.steps[k].restarted()) return static_cast<int>(k);
