@@ -11,18 +11,26 @@ MarchedStep StepOrRestart(LineContactSolver& solver,
                           FilmState* state,
                           bool steady_restart) {
   std::optional<FilmState> before;
-  if (steady_restart) before = *state;
+  ContactConditions c_prev;  // the conditions of the level before the step
+  if (steady_restart) {
+    before = *state;
+    c_prev = solver.SaveTransient().c_prev;
+  }
   MarchedStep out;
   out.summary = solver.Step(c, dt_s, state);
   if (out.summary.usable() || !steady_restart) return out;
+  // The steady film at the step's time: its surfaces moved on as the step would have moved
+  // them (rough surfaces are sampled at their travel; LineContactSolver::Step's trapezoid).
   FilmState steady = *before;
+  steady.time_s = before->time_s + dt_s;
+  steady.travel1_m = before->travel1_m + 0.5 * dt_s * (c_prev.u1_m_s + c.u1_m_s);
+  steady.travel2_m = before->travel2_m + 0.5 * dt_s * (c_prev.u2_m_s + c.u2_m_s);
   LineContactSolver::Summary s = solver.SolveSteady(c, &steady);
   if (!s.usable()) {
     out.summary.message += "; the steady film at this time did not converge either (" +
                            ToString(s.termination) + ": " + s.message + ")";
     return out;
   }
-  steady.time_s = before->time_s + dt_s;
   *state = std::move(steady);
   solver.BeginTransient(c, *state);
   out.restart_reason = ToString(out.summary.termination) + ": " + out.summary.message;
