@@ -265,5 +265,38 @@ TEST(StepRestart, ACycleNamesItsRestartedStepInEveryResult) {
   fs::remove_all(dir);
 }
 
+#ifdef TEHL_SLOW_TESTS
+// The thermal seed 004 cycle itself on 2049 nodes (150 steps, about 70 s): it stopped at step
+// 70, just after B, before failed_step existed (docs/thermal.md, "The seed 004 cycle at full
+// resolution"); now it runs to E with the failed step restarted, and every other step is a
+// converged transient step.
+TEST(StepRestart, Seed004ThermalCycleOn2049NodesRunsToE) {
+  const fs::path dir = testing::ScratchPath("tehl_step_restart", "seed2049");
+  fs::create_directories(dir);
+  std::ifstream in(std::string(TEHL_SOURCE_DIR) + "/cases/seed004_sae40.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string grid = "grid_points = 513";
+  const size_t at = text.find(grid);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, grid.size(), "grid_points = 2049");
+  const fs::path path = dir / "seed2049.toml";
+  std::ofstream(path) << text;
+  MeshCycleRunOptions o;
+  o.quiet = true;
+  o.write_files = false;
+  const MeshCycleResult r = RunMeshCycle(path.string(), o);
+  ASSERT_TRUE(r.converged()) << r.steps.back().summary.message;
+  EXPECT_GE(r.Restarts(), 1);
+  EXPECT_LE(r.Restarts(), 3);
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    if (r.steps[k].restarted()) {
+      EXPECT_GT(r.steps[k].s_m, r.s_b_m) << "a restart before B, at step " << k;
+      std::printf("step %zu (s = %.4g mm) restarted: %s\n", k, r.steps[k].s_m * 1e3,
+                  r.steps[k].restart_reason.c_str());
+    }
+  fs::remove_all(dir);
+}
+#endif
+
 }  // namespace
 }  // namespace tehl
