@@ -143,12 +143,14 @@ def read_contact_steps(path):
         return [float(r[name]) for r in rows] if name in head else None
 
     t_max, mu, wall = column("t_max_k"), column("mu"), column("wall_time_s")
+    restarts = column("steady_restart")
     return {"h_min": float(last["h_min_m"]), "h_c": float(last["h_c_m"]),
             "p_max": float(last["p_max_pa"]),
             "T_max": max(t_max) if t_max else None,
             "mu": sum(mu) / len(mu) if mu else None,
             "wall_s": sum(wall) if wall else None,
-            "steps_run": len(rows) - 1}
+            "steps_run": len(rows) - 1,
+            "restarts": int(sum(restarts)) if restarts else 0}
 
 
 def read_result(info):
@@ -168,13 +170,18 @@ def read_result(info):
             row["mu"] = float(np.mean(c["mu"][:])) if "mu" in c else None
             row["wall_s"] = float(f.attrs["wall_time"])
             row["steps_run"] = len(s) - 1
-            row["ok"] = str(f.attrs["converged"]) in ("true", "b'true'")
+            # A run whose failed time steps were replaced by the steady film (docs/results.md)
+            # is not a converged transient run: it neither has an error nor serves as a
+            # reference.
+            restarts = int(np.sum(f["solver/steady_restart"][:])) \
+                if "solver/steady_restart" in f else 0
+            row["ok"] = str(f.attrs["converged"]) in ("true", "b'true'") and restarts == 0
         return row
     steps = stem + "_steps.csv"
     summary = read_contact_steps(steps) if os.path.isfile(steps) else None
     if summary is not None:
         row.update(summary)
-        row["ok"] = info["rc"] == 0
+        row["ok"] = info["rc"] == 0 and summary["restarts"] == 0
         return row
     row.update({q: None for q, _ in QUANTITIES})
     row.update({"wall_s": None, "steps_run": 0, "ok": False})
@@ -463,7 +470,8 @@ def write_markdown(a, data, effects, elapsed, load_before, load_after):
               "sum of its `wall_time_s` column (the solve only).")
     md.append("- One setting varied at a time, the others at the base. The error is relative "
               "to the finest converged run of the same series (the reference, 'ref'); a run "
-              "that did not converge has no error ('-'). For the grid the Richardson "
+              "that did not converge, or had a time step replaced by the steady film "
+              "(`[numerics] failed_step`), has no error ('-'). For the grid the Richardson "
               "estimate below each table says how far that reference itself is from the grid "
               "limit. The thermal coupling tolerance (0.01 K) has no case key and is not "
               "varied.")

@@ -41,6 +41,11 @@ bool ContactRunResult::converged() const {
                      [](const ContactStepRecord& r) { return r.summary.usable(); });
 }
 
+int ContactRunResult::Restarts() const {
+  return static_cast<int>(std::count_if(steps.begin(), steps.end(),
+                                        [](const ContactStepRecord& r) { return r.restarted(); }));
+}
+
 ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOptions& ro) {
   Document doc = internal::ReadCaseDocument(case_path);
   // ReadCaseDocument has reported a file without [gear] or [contact] (or one it cannot read).

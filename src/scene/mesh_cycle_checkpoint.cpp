@@ -14,7 +14,7 @@ namespace tehl::internal {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '4'};
-constexpr char kRowsMagic[8] = {'T', 'E', 'H', 'L', 'R', 'O', 'W', '1'};
+constexpr char kRowsMagic[8] = {'T', 'E', 'H', 'L', 'R', 'O', 'W', '2'};
 constexpr std::int64_t kRowsHeaderBytes = sizeof kRowsMagic + sizeof(std::uint64_t);
 
 // The profile arrays of a result, in journal order.

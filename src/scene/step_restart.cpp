@@ -25,6 +25,10 @@ MarchedStep StepOrRestart(LineContactSolver& solver,
   steady.time_s = before->time_s + dt_s;
   steady.travel1_m = before->travel1_m + 0.5 * dt_s * (c_prev.u1_m_s + c.u1_m_s);
   steady.travel2_m = before->travel2_m + 0.5 * dt_s * (c_prev.u2_m_s + c.u2_m_s);
+  // The state before the step was solved for the previous level's conditions (also after a
+  // --resume, whose restored state does not carry them): SolveSteady then starts from it
+  // scaled by Hertz similarity, as the step itself did (LineContactSolver::Step).
+  steady.solved_for = c_prev;
   LineContactSolver::Summary s = solver.SolveSteady(c, &steady);
   if (!s.usable()) {
     out.summary.message += "; the steady film at this time did not converge either (" +
@@ -34,7 +38,12 @@ MarchedStep StepOrRestart(LineContactSolver& solver,
   *state = std::move(steady);
   solver.BeginTransient(c, *state);
   out.restart_reason = ToString(out.summary.termination) + ": " + out.summary.message;
+  // The step's cost includes the failed attempt: its time, iterations and substeps.
   s.wall_time_s += out.summary.wall_time_s;
+  s.total_iterations += out.summary.total_iterations;
+  s.krylov_iterations += out.summary.krylov_iterations;
+  s.coupling_iterations += out.summary.coupling_iterations;
+  s.substeps = out.summary.substeps;
   out.summary = std::move(s);
   return out;
 }

@@ -19,8 +19,9 @@
 namespace tehl::internal {
 
 struct MarchedStep {
-  // The step's summary, or that of the steady solve that replaced it (its wall time then
-  // includes the failed attempt).
+  // The step's summary, or that of the steady solve that replaced it (its wall time, total,
+  // GMRES and coupling iterations then include the failed attempt, and `substeps` is the
+  // attempt's: 4 after the solver's whole ladder).
   LineContactSolver::Summary summary;
   // Empty: the transient step converged (or failed with restart off, or the steady solve
   // failed too: then `summary` is the step's, its message naming both failures). Otherwise

@@ -244,7 +244,9 @@ void ExpectCycleConvergedOrDiagnosed(const CycleRun& run,
   }
   Row(name, params,
       std::to_string(r.x_m.size()) + " nodes, " + std::to_string(r.planned_steps) + " steps",
-      r.converged() ? "converged"
+      r.converged() ? (r.Restarts() == 0 ? std::string("converged")
+                                         : "converged, " + std::to_string(r.Restarts()) +
+                                               " step(s) restarted from the steady film")
                     : "diagnostic at step " + std::to_string(r.steps.size() - 1) + " of " +
                           std::to_string(r.planned_steps),
       iterations, std::to_string(stages) + " / " + std::to_string(substeps), r.wall_time_s);

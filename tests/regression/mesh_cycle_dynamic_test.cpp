@@ -44,6 +44,7 @@ TEST(MeshCycleDynamic, Seed004At1000RpmAndNearResonanceConverge) {
   for (const char* name : {"seed004_sae40_dynamic", "seed004_sae40_dynamic_resonance"}) {
     const MeshCycleResult r = RunReduced(name);
     EXPECT_TRUE(r.converged()) << name;
+    EXPECT_EQ(r.Restarts(), 0) << "a time step was restarted from the steady film";
     for (const MeshCycleStep& s : r.steps) {
       EXPECT_GT(s.load_n_per_m, 0.0) << name;
       EXPECT_GT(s.h_min_m, 0.0) << name;

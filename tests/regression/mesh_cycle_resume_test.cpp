@@ -98,12 +98,14 @@ TEST_P(MeshCycleResume, KilledRunResumesToTheUninterruptedResult) {
   const std::string ref_dir = TempDirFor("resume_ref"), dir = TempDirFor("resume_killed");
   const MeshCycleResult ref = RunInProcess(case_path, ref_dir, false);
   ASSERT_TRUE(ref.converged());
+  EXPECT_EQ(ref.Restarts(), 0) << "a time step was restarted from the steady film";
 
   RunAndKillAfterCheckpoint(case_path, dir);
   const std::string stem = fs::path(case_path).stem().string();
   EXPECT_FALSE(fs::exists(dir + "/" + stem + ".h5"));
   const MeshCycleResult resumed = RunInProcess(case_path, dir, true);
   ASSERT_TRUE(resumed.converged());
+  EXPECT_EQ(resumed.Restarts(), 0) << "a time step was restarted from the steady film";
   EXPECT_GT(resumed.resumed_from_step, 1);  // steps before the checkpoint were not solved again
   EXPECT_EQ(resumed.resumed_from_step % 5, 1);
   ExpectSameCycle(ref, resumed, thermal);
@@ -130,6 +132,7 @@ TEST(MeshCycleResumeGuard, AnUnwritableCheckpointDoesNotStopTheRun) {
   MeshCycleResult r;
   ASSERT_NO_THROW(r = RunInProcess(a, dir, false));
   EXPECT_TRUE(r.converged());
+  EXPECT_EQ(r.Restarts(), 0) << "a time step was restarted from the steady film";
   EXPECT_TRUE(fs::exists(dir + "/" + stem + ".h5"));
   EXPECT_FALSE(fs::exists(dir + "/" + stem + ".checkpoint"));
 }
@@ -144,6 +147,7 @@ TEST(MeshCycleResumeGuard, CheckpointOfAnotherCaseIsIgnored) {
   std::ofstream(a) << std::regex_replace(text, std::regex("power_w = [^\n]*"), "power_w = 12000.0");
   const MeshCycleResult r = RunInProcess(a, dir, true);
   ASSERT_TRUE(r.converged());
+  EXPECT_EQ(r.Restarts(), 0) << "a time step was restarted from the steady film";
   EXPECT_EQ(r.resumed_from_step, 0);
 }
 

@@ -24,6 +24,7 @@ double MeanMinFilm(const MeshCycleResult& r) {
 
 void ExpectComplete(const MeshCycleResult& r) {
   ASSERT_TRUE(r.converged()) << r.steps.back().summary.message;
+  EXPECT_EQ(r.Restarts(), 0) << "a time step was restarted from the steady film";
   EXPECT_EQ(r.planned_steps, 40);
   ASSERT_EQ(r.steps.size(), 41u);
   EXPECT_DOUBLE_EQ(r.steps.front().s_m, 0.0);
@@ -54,6 +55,7 @@ TEST(MeshCycleSeed004, FilmIsThinnestNearEngagement) {
   // engagement, where R and um are smallest (C_RT, C_UT < 1 on A-B).
   const MeshCycleResult r = RunReduced("seed004_sae40");
   ASSERT_TRUE(r.converged());
+  EXPECT_EQ(r.Restarts(), 0) << "a time step was restarted from the steady film";
   const auto thinnest = std::min_element(
       r.steps.begin(), r.steps.end(),
       [](const MeshCycleStep& a, const MeshCycleStep& b) { return a.h_min_m < b.h_min_m; });
@@ -82,6 +84,7 @@ TEST(MeshCycleSeed004, HigherSpeedThickensTheFilm) {
   const MeshCycleResult fast = RunReduced(
       "seed004_sae40", Reduced({{"pinion_speed_rpm", "1500.0"}, {"power_w", "15000.0"}}));
   ASSERT_TRUE(fast.converged());
+  EXPECT_EQ(fast.Restarts(), 0) << "a time step was restarted from the steady film";
   EXPECT_NEAR(fast.w0_n_per_m, slow.w0_n_per_m, 1e-6 * slow.w0_n_per_m);  // same load
   EXPECT_GT(PitchCentralFilm(fast), PitchCentralFilm(slow));
   EXPECT_GT(MeanMinFilm(fast), MeanMinFilm(slow));
@@ -92,6 +95,7 @@ TEST(MeshCycleSeed004, HigherLoadThinsTheFilm) {
   const MeshCycleResult light = RunReduced("seed004_sae40");
   const MeshCycleResult heavy = RunReduced("seed004_sae40", Reduced({{"power_w", "20000.0"}}));
   ASSERT_TRUE(heavy.converged());
+  EXPECT_EQ(heavy.Restarts(), 0) << "a time step was restarted from the steady film";
   EXPECT_NEAR(heavy.w0_n_per_m, 2 * light.w0_n_per_m, 1e-6 * light.w0_n_per_m);
   EXPECT_LT(PitchCentralFilm(heavy), PitchCentralFilm(light));
   EXPECT_LT(MeanMinFilm(heavy), MeanMinFilm(light));

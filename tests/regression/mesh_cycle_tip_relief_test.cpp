@@ -45,7 +45,9 @@ TEST(MeshCycleTipRelief, ReliefRemovesTheSqueezeTransientAfterB) {
       "seed004_sae40_tip_relief", Reduced({{"steps", "60"}, {"non_newtonian", "false"}}));
   const MeshCycleResult plain = RunReduced("seed004_sae40", Reduced({{"steps", "60"}}));
   ASSERT_TRUE(relieved.converged());
+  EXPECT_EQ(relieved.Restarts(), 0) << "a time step was restarted from the steady film";
   ASSERT_TRUE(plain.converged());
+  EXPECT_EQ(plain.Restarts(), 0) << "a time step was restarted from the steady film";
   // docs/gear.md "Tip relief": without relief the share steps from 0.591 to 1 at B; with
   // 13 um over 2.3 mm from 0.965 (the last A-B step lies a little before B).
   EXPECT_GT(StepAtB(plain), 0.35);
@@ -63,6 +65,7 @@ TEST(MeshCycleTipRelief, AReliefThatLiftsThePairOffIsSolvedOnTheLoadedPart) {
       RunReduced("seed004_sae40_tip_relief",
                  Reduced({{"tip_relief_m", "20e-6"}, {"steps", "40"}, {"non_newtonian", "false"}}));
   ASSERT_TRUE(r.converged());
+  EXPECT_EQ(r.Restarts(), 0) << "a time step was restarted from the steady film";
   EXPECT_GT(r.begin_m, 0.0);
   EXPECT_LT(r.begin_m, r.s_b_m);
   EXPECT_LT(r.end_m, r.length_m);

@@ -50,6 +50,7 @@ void Print(const char* name, const MeshCycleResult& r) {
 // convergence, heating and friction and print their balance.
 void ExpectThermalComplete(const MeshCycleResult& r, bool check_balance = true) {
   ASSERT_TRUE(r.converged()) << r.steps.back().summary.message;
+  EXPECT_EQ(r.Restarts(), 0) << "a time step was restarted from the steady film";
   ASSERT_TRUE(r.thermal);
   ASSERT_EQ(r.steps.size(), 31u);
   for (size_t k = 0; k < r.steps.size(); ++k) {
@@ -98,6 +99,7 @@ TEST(ThermalCycleSeed004, HigherLoadHeatsAndRaisesFriction) {
   Print("SAE 40", base);
   Print("SAE 40, load x 1.5", heavy);
   ASSERT_TRUE(base.converged());
+  EXPECT_EQ(base.Restarts(), 0) << "a time step was restarted from the steady film";
   ExpectThermalComplete(heavy, false);
   EXPECT_NEAR(heavy.w0_n_per_m, 1.5 * base.w0_n_per_m, 1e-6 * base.w0_n_per_m);
   EXPECT_GT(MaxTemperature(heavy), MaxTemperature(base));
@@ -113,6 +115,7 @@ TEST(ThermalCycleSeed004, HigherSpeedHeatsAndLowersFriction) {
   Print("SAE 40", base);
   Print("SAE 40, speed x 1.5", fast);
   ASSERT_TRUE(base.converged());
+  EXPECT_EQ(base.Restarts(), 0) << "a time step was restarted from the steady film";
   ExpectThermalComplete(fast, false);
   EXPECT_NEAR(fast.w0_n_per_m, base.w0_n_per_m, 1e-6 * base.w0_n_per_m);  // same load
   EXPECT_GT(MaxTemperature(fast), MaxTemperature(base));
@@ -126,6 +129,7 @@ TEST(ThermalCycleSeed004, Sae90HasLowerFrictionThanSae40) {
   Print("SAE 40", r40);
   Print("SAE 90", r90);
   ASSERT_TRUE(r40.converged());
+  EXPECT_EQ(r40.Restarts(), 0) << "a time step was restarted from the steady film";
   ExpectThermalComplete(r90);
   EXPECT_LT(MeanFriction(r90), MeanFriction(r40));
 }

@@ -53,6 +53,7 @@ struct ContactRunResult {
   bool thermal = false;            // effects.thermal of the case
   ContactSolids solids;            // thermal properties of bodies 1 and 2
   bool converged() const;   // every step usable
+  int Restarts() const;     // time steps whose film is a steady restart
 };
 
 // Reads and runs a [contact] case. Throws InputError (with file:line) for bad input.

@@ -125,8 +125,11 @@ std::vector<double> MeshCycleStepPositions(double length_m,
 int AutomaticMeshCycleSteps(double transits);
 
 // Reads a gear case and runs its mesh cycle. Throws InputError (with file:line) for bad
-// input; a step that does not converge stops the run, which is then still written (the
-// Summary of each step says how it ended).
+// input. A time step that does not converge is replaced by the steady film at its point and
+// flagged (MeshCycleStep::restart_reason; [numerics] failed_step = "steady_restart", the
+// default); one that cannot be replaced (failed_step = "stop", the steady film at A, or a
+// steady film that fails too) stops the run, which is then still written (the Summary of
+// each step says how it ended).
 MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOptions& options);
 
 }  // namespace tehl

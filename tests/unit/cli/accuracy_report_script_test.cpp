@@ -70,6 +70,24 @@ TEST(AccuracyReport, ContactStepsAreSummarizedLikeTheCycle) {
   EXPECT_NEAR(Num(m, "mu"), 0.08 / 3, 1e-15);
   EXPECT_EQ(Num(m, "wall_s"), 0.875);
   EXPECT_EQ(Num(m, "steps_run"), 2.0);
+  EXPECT_EQ(Num(m, "restarts"), 0.0);  // no steady_restart column: none
+}
+
+// A run with a step restarted from the steady film ([numerics] failed_step) counts its
+// restarts (0 + 1 + 0 = 1); read_result then marks it not ok, so it neither gets an error nor
+// becomes a series' reference.
+TEST(AccuracyReport, ContactStepsCountTheirSteadyRestarts) {
+  if (!PythonReady()) GTEST_SKIP() << "/usr/bin/python3 without h5py, matplotlib or numpy";
+  const std::string csv = testing::UniqueTempPath("restart_steps.csv");
+  std::ofstream(csv) << "t_s,w_n_per_m,u1_m_s,u2_m_s,h_min_m,h_c_m,p_max_pa,steady_restart,"
+                        "termination\n"
+                        "0.0,1e5,1.2,0.8,3.0e-7,4.0e-7,6.0e8,0,converged\n"
+                        "1e-4,1e5,1.2,0.8,2.9e-7,3.9e-7,6.1e8,1,converged\n"
+                        "2e-4,1e5,1.2,0.8,2.8e-7,3.8e-7,6.2e8,0,converged\n";
+  EXPECT_EQ(Num(CallScript("a.read_contact_steps('" + csv + "')"), "restarts"), 1.0);
+  const std::string stem = csv.substr(0, csv.size() - std::string("_steps.csv").size());
+  const auto row = CallScript("a.read_result({'case': '" + stem + ".toml', 'rc': 0})");
+  EXPECT_EQ(row.at("ok"), "False");
 }
 
 // A file of the earlier format: the film is read, T_max, mu and the wall time are None (shown

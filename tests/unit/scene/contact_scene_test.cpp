@@ -103,6 +103,7 @@ TEST(ContactScene, SteadyDiscCaseConvergesAndWritesItsFiles) {
   const ContactRunResult r =
       RunContactCase(std::string(TEHL_SOURCE_DIR) + "/cases/disc_steady.toml", o);
   ASSERT_TRUE(r.converged());
+  EXPECT_EQ(r.Restarts(), 0) << "a time step was restarted from the steady film";
   ASSERT_EQ(r.steps.size(), 1u);
   EXPECT_TRUE(fs::exists(r.profile_csv));
   EXPECT_FALSE(fs::exists(r.profile_csv + ".tmp"));
@@ -138,6 +139,7 @@ TEST(ContactScene, ARigidCaseGetsAGridOnTheMartinLengthAndMartinsFilm) {
   o.output_dir = dir.string();
   const ContactRunResult r = RunContactCase(path.string(), o);
   ASSERT_TRUE(r.converged());
+  EXPECT_EQ(r.Restarts(), 0) << "a time step was restarted from the steady film";
   const double eta0 = 0.1140574;  // SAE 40 at 313.15 K (seed 004 Table 2)
   const double radius = 0.01, um = 1.0, w = 1.0e4;
   const double h0 = 4.896 * eta0 * um * radius / w;
@@ -163,6 +165,7 @@ TEST(ContactScene, LoadDoublingConvergesAtEveryStepAndThinsTheFilm) {
   const ContactRunResult r =
       RunContactCase(std::string(TEHL_SOURCE_DIR) + "/cases/disc_load_step.toml", o);
   ASSERT_TRUE(r.converged());
+  EXPECT_EQ(r.Restarts(), 0) << "a time step was restarted from the steady film";
   EXPECT_EQ(r.steps.size(), 101u);
   // Higher load, thinner film (seed 004 trend 4): the end state at 2w has a smaller h_c.
   EXPECT_LT(r.steps.back().h_c_m, r.steps.front().h_c_m);
@@ -210,6 +213,7 @@ TEST(ContactScene, MovingWavinessMakesThePressureRippleAndConvergesEveryStep) {
   const ContactRunResult r =
       RunContactCase(std::string(TEHL_SOURCE_DIR) + "/cases/disc_rough.toml", o);
   ASSERT_TRUE(r.converged());
+  EXPECT_EQ(r.Restarts(), 0) << "a time step was restarted from the steady film";
   // Seed 004 trend 3: roughness dominates the pressure ripple. A 0.1 um waviness passing
   // through a 0.6 GPa contact moves p_max by well over 10 % between steps, while the smooth
   // steady film has one p_max.
@@ -231,6 +235,7 @@ TEST(ContactScene, IsothermalDiscRecordsTheInletTemperatureAndRollingFriction) {
   o.output_dir = d.string();
   const ContactRunResult r = RunContactCase(DiscCase(d, false, 257), o);
   ASSERT_TRUE(r.converged());
+  EXPECT_EQ(r.Restarts(), 0) << "a time step was restarted from the steady film";
   ASSERT_EQ(r.steps.size(), 1u);
   const ContactStepRecord& s = r.steps[0];
   EXPECT_EQ(s.t_max_k, kInletK);
@@ -288,6 +293,7 @@ TEST(ContactScene, ThermalRollingDiscIsHotterThanItsInletWithPositiveFriction) {
   o.output_dir = d.string();
   const ContactRunResult r = RunContactCase(DiscCase(d, true, 257), o);
   ASSERT_TRUE(r.converged()) << r.steps.back().summary.message;
+  EXPECT_EQ(r.Restarts(), 0) << "a time step was restarted from the steady film";
   const ContactStepRecord& s = r.steps[0];
   EXPECT_GT(s.t_max_k, kInletK);
   EXPECT_GT(s.friction_coefficient, 0.0);
