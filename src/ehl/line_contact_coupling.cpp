@@ -153,6 +153,7 @@ LineContactSolver::Summary LineContactSolver::Impl::SolveCoupled(const ContactCo
     thermal_coarse_ = std::make_unique<Impl>(UniformGrid(grid_.x_start_m(), grid_.x_end_m(), nc),
                                              e_prime_, lub_, eff_, opt_, s1_, s2_, solids_);
   FilmState cs;
+  internal::CopyClock(*s, &cs);
   const Summary coarse = thermal_coarse_->SolveCoupled(c, td, nullptr, 0.0, &cs);
   Summary total = sum;
   total.total_iterations += coarse.total_iterations;

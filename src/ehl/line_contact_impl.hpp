@@ -20,6 +20,18 @@
 #include "tehl/ehl/elastic_deflection.hpp"
 #include "tehl/ehl/line_contact_solver.hpp"
 
+namespace tehl::internal {
+
+// Copies the time and the travel of both surfaces (where rough surfaces are sampled): a
+// guess that replaces a state keeps them.
+inline void CopyClock(const FilmState& from, FilmState* to) {
+  to->time_s = from.time_s;
+  to->travel1_m = from.travel1_m;
+  to->travel2_m = from.travel2_m;
+}
+
+}  // namespace tehl::internal
+
 namespace tehl {
 
 class LineContactSolver::Impl {
@@ -46,7 +58,9 @@ class LineContactSolver::Impl {
 
   Scales ScalesFor(const ContactConditions& c) const;
   double EstimateCentralFilm(const ContactConditions& c) const;
-  FilmState InitialGuess(const ContactConditions& c) const;
+  // `clock`: the state whose time and travel the guess takes (rough surfaces are sampled at
+  // the travel); null = time and travel 0.
+  FilmState InitialGuess(const ContactConditions& c, const FilmState* clock = nullptr) const;
   // Row weights c_i = -1/|dr_i/dP_i| at the current linearization: the complementarity
   // min(P_i, c_i r_i) then compares two quantities of the same size (a pressure change),
   // however much rho h^3/(12 eta) varies along the film. Negative because the cavitated
@@ -81,7 +95,10 @@ class LineContactSolver::Impl {
   // Grid sequencing: without a usable guess, solve on a grid with half the cells (down to
   // opt_.coarse_grid_nodes) and interpolate. A damped Newton method moves the cavitation
   // boundary about one node per iteration, so the fine grid should start next to it.
-  FilmState SequencedGuess(const ContactConditions& c, const internal::TimeDerivative& td);
+  // The guess keeps the time and travel of `clock` (the state it replaces).
+  FilmState SequencedGuess(const ContactConditions& c,
+                           const internal::TimeDerivative& td,
+                           const FilmState& clock);
 
   // --- transient ----------------------------------------------------------------------
   struct History {
@@ -143,6 +160,7 @@ class LineContactSolver::Impl {
                        FilmState* s);
   // A state of grid g interpolated linearly onto this grid: pressure, rigid approach and (when
   // present) the film temperature, node row by node row.
+  // cs on grid g, interpolated onto this grid (with cs's time and travel).
   FilmState Interpolated(const UniformGrid& g, const FilmState& cs, const ContactConditions& c);
   // One coupled solve from *s: the alternation, then (newton: when it stalls) Newton on the
   // coupling.

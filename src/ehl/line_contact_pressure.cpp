@@ -270,7 +270,7 @@ LineContactSolver::Summary LineContactSolver::Impl::Solve(const ContactCondition
   const auto t0 = Clock::now();
   Summary sum;
   if (!ValidConditions(c, &sum)) return sum;
-  if (!s->valid() || s->p_pa.size() != grid_.size()) *s = SequencedGuess(c, td);
+  if (!s->valid() || s->p_pa.size() != grid_.size()) *s = SequencedGuess(c, td, *s);
   const FilmState start = *s;
   sum = Newton(c, 1.0, td, s);
   int total = sum.total_iterations, krylov = sum.krylov_iterations, stages = 0;
@@ -278,7 +278,8 @@ LineContactSolver::Summary LineContactSolver::Impl::Solve(const ContactCondition
     // Continuation: theta scales the load and the pressure-viscosity coefficient.
     const std::string first_failure = sum.message;
     *s = InitialGuess(ContactConditions{c.reduced_radius_m, c.u1_m_s, c.u2_m_s,
-                                        0.05 * c.load_n_per_m, c.temperature_k});
+                                        0.05 * c.load_n_per_m, c.temperature_k},
+                      &start);
     double theta = 0.05, growth = 2.0;
     ContactConditions c_good = c;  // the conditions *s solves once a stage has converged
     bool have_good = false;
@@ -334,10 +335,11 @@ LineContactSolver::Summary LineContactSolver::Impl::Solve(const ContactCondition
 }
 
 FilmState LineContactSolver::Impl::SequencedGuess(const ContactConditions& c,
-                                                  const TimeDerivative& td) {
+                                                  const TimeDerivative& td,
+                                                  const FilmState& clock) {
   const int n = grid_.size();
   const int nc = (n - 1) / 2 + 1;
-  if (td.active || nc < opt_.coarse_grid_nodes) return InitialGuess(c);
+  if (td.active || nc < opt_.coarse_grid_nodes) return InitialGuess(c, &clock);
   if (!coarse_) {
     Options o = opt_;
     o.linear_solver = LinearSolverKind::kAuto;
@@ -359,9 +361,9 @@ FilmState LineContactSolver::Impl::SequencedGuess(const ContactConditions& c,
                                      lub_, coarse_effects, o, s1_, s2_, solids_);
   }
   FilmState cs;
-  cs.time_s = 0;
+  internal::CopyClock(clock, &cs);
   const Summary sum = coarse_->Solve(c, TimeDerivative{}, &cs);
-  if (!sum.usable()) return InitialGuess(c);
+  if (!sum.usable()) return InitialGuess(c, &clock);
   return Interpolated(coarse_->grid_, cs, c);
 }
 
@@ -370,6 +372,7 @@ FilmState LineContactSolver::Impl::Interpolated(const UniformGrid& g,
                                                 const ContactConditions& c) {
   const int n = grid_.size();
   FilmState s;
+  internal::CopyClock(cs, &s);
   s.p_pa.setZero(n);
   const bool thermal = cs.temperature.t_k.rows() == g.size();
   if (thermal) s.temperature.t_k.resize(n, cs.temperature.t_k.cols());

@@ -263,9 +263,11 @@ double LineContactSolver::Impl::EstimateCentralFilm(const ContactConditions& c) 
   return MoesCentralFilmM(g.U, g.G, g.W, c.reduced_radius_m);
 }
 
-FilmState LineContactSolver::Impl::InitialGuess(const ContactConditions& c) const {
+FilmState LineContactSolver::Impl::InitialGuess(const ContactConditions& c,
+                                                const FilmState* clock) const {
   const int n = grid_.size();
   FilmState s;
+  if (clock) internal::CopyClock(*clock, &s);
   s.p_pa.setZero(n);
   const double h_c = EstimateCentralFilm(c);
   const HertzScales hz = LineContactHertz(c.load_n_per_m, c.reduced_radius_m, e_prime_);

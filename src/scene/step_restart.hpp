@@ -1,9 +1,10 @@
 // A time step of a transient run (mesh cycle, [contact] time tables) with the fallback of
 // [numerics] failed_step = "steady_restart": when the step does not converge (after the
 // solver's own substeps), the film at the step's time is solved as a steady film from the
-// state before the step, and the transient marches on from it (BeginTransient: BDF1 for the
-// next step, then the case's scheme). The step is flagged with the failure it replaced, so a
-// result never passes a steady film off as the transient one.
+// state before the step (if that fails too, once more cold: grid sequencing from the coarse
+// grid, independent of that state), and the transient marches on from it (BeginTransient:
+// BDF1 for the next step, then the case's scheme). The step is flagged with the failure it
+// replaced, so a result never passes a steady film off as the transient one.
 //
 // Why: a transient step can fail where the steady film does not, e.g. the Newtonian thermal
 // film right after B of the seed 004 cycle on 2049 nodes, whose squeeze spike heats faster
@@ -23,8 +24,9 @@ struct MarchedStep {
   // GMRES and coupling iterations then include the failed attempt, and `substeps` is the
   // attempt's: 4 after the solver's whole ladder).
   LineContactSolver::Summary summary;
-  // Empty: the transient step converged (or failed with restart off, or the steady solve
-  // failed too: then `summary` is the step's, its message naming both failures). Otherwise
+  // Empty: the transient step converged (or failed with restart off, or both steady solves
+  // failed too: then `summary` is the step's with their cost added, its message naming all
+  // three failures). Otherwise
   // the failed step's termination and message.
   std::string restart_reason;
 };

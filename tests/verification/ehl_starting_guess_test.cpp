@@ -10,7 +10,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
+#include "tehl/ehl/surface_roughness.hpp"
 #include "verification/ehl_moes_point.hpp"
 
 namespace tehl {
@@ -51,6 +53,47 @@ TEST(StartingGuessVerification, SameFilmFromPerturbedApproachOn257Nodes) {
 
 TEST(StartingGuessVerification, SameFilmFromPerturbedApproachOn513Nodes) {
   ExpectSameFilmFromEveryStart(513);
+}
+
+// A state without a film (a cold solve) still carries its time and the travel of both
+// surfaces: the fresh guesses that replace it (grid sequencing, and the load continuation's
+// Hertz guess) keep them, so rough surfaces are sampled where they are. Surface 1 carries
+// waviness of 0.3 central films and wavelength b/2, moved by d = 0.3 wavelengths; the same
+// film must come out of the surface with its phase shifted by 2 pi d / wavelength at travel 0
+// (SinusoidalWaviness: height(x, d) = A sin(2 pi (x - d) / wavelength + phase)).
+TEST(StartingGuessVerification, AColdSolveSamplesRoughSurfacesAtTheStateTravel) {
+  const MoesPoint mp{20, 10};
+  const ContactConditions c = mp.Conditions();
+  const double a = 0.3 * mp.MoesHc() * mp.FilmScale();
+  const double lambda = 0.5 * mp.Hertz().half_width_m, d = 0.3 * lambda;
+  FilmEffects effects;
+  effects.transient = false;
+  effects.roughness = true;
+  const LineContactSolver::Options o;
+  const Lubricant oil = testing::ReferenceOil(mp.eta0_pa_s);  // outlives the solvers
+  auto film = [&](double phase, double travel) {
+    LineContactSolver solver(mp.Grid(257), mp.e_prime_pa, oil, effects, o,
+                             std::make_shared<SinusoidalWaviness>(a, lambda, phase));
+    FilmState st;
+    st.time_s = 2e-4;
+    st.travel1_m = travel;
+    st.travel2_m = 2 * travel;
+    const LineContactSolver::Summary sum = solver.SolveSteady(c, &st);
+    EXPECT_TRUE(sum.usable()) << sum.BriefReport();
+    EXPECT_EQ(st.time_s, 2e-4);
+    EXPECT_EQ(st.travel1_m, travel);
+    EXPECT_EQ(st.travel2_m, 2 * travel);
+    std::printf("phase %.3f, travel %.3g m: h_min %.6e m, %s\n", phase, travel, st.MinFilm(),
+                sum.BriefReport().c_str());
+    return st;
+  };
+  const double kPi = 3.14159265358979323846;
+  const FilmState moved = film(0.0, d);
+  const FilmState shifted = film(-2 * kPi * d / lambda, 0.0);
+  EXPECT_NEAR(moved.MinFilm() / shifted.MinFilm(), 1.0, 1e-6);
+  EXPECT_NEAR(moved.MaxPressure() / shifted.MaxPressure(), 1.0, 1e-6);
+  // Not the film of travel 0: the waviness moves h_min by more than the tolerance.
+  EXPECT_GT(std::abs(film(0.0, 0.0).MinFilm() / moved.MinFilm() - 1.0), 1e-3);
 }
 
 }  // namespace
