@@ -49,6 +49,22 @@ def restarted_steps(f):
     return [int(k) for k in np.flatnonzero(f["solver/steady_restart"][:])]
 
 
+def failed_steps(f):
+    """Steps that did not converge (/solver/termination): the one where a run stopped, or
+    steps left behind with [numerics] failed_step = "steady_restart_or_skip"."""
+    if "solver/termination" not in f:
+        return []
+    return [i for i, t in enumerate(f["solver/termination"][:]) if t.decode() != "converged"]
+
+
+def film_curve(cyc, name, failed):
+    """A film quantity along the path, with the steps that did not converge left out (NaN):
+    their rows hold a failed attempt, not a film."""
+    v = np.array(cyc[name][:], dtype=float)
+    v[failed] = np.nan
+    return v
+
+
 def mark_restarts(ax, s, restarts):
     """A red dotted line at each restarted step (labelled once)."""
     for i, k in enumerate(restarts):
@@ -97,13 +113,18 @@ def main():
         os.makedirs(out, exist_ok=True)
     except OSError as e:
         fail(f"-o/--output-dir {out}: cannot create the folder for the figures ({e.strerror})")
+    failed = failed_steps(f)
     if f.attrs.get("converged", "true") == "false":
         term = f["solver/termination"][:] if "solver/termination" in f else []
-        bad = [i for i, t in enumerate(term) if t.decode() != "converged"]
-        where = f"step {bad[0]} ({term[bad[0]].decode()})" if bad else "a step"
-        print(f"warning: {a.result}: the run did not converge at {where}; the figures show "
-              f"{len(f['cycle/s'])} step(s) written, of which the last did not converge",
-              file=sys.stderr)
+        where = f"step {failed[0]} ({term[failed[0]].decode()})" if failed else "a step"
+        if len(failed) > 1:
+            listed = ", ".join(str(k) for k in failed[:8]) + (", ..." if len(failed) > 8 else "")
+            print(f"warning: {a.result}: {len(failed)} steps did not converge (steps {listed}; "
+                  f"the first at {where}); the curves leave them out", file=sys.stderr)
+        else:
+            print(f"warning: {a.result}: the run did not converge at {where}; the figures show "
+                  f"{len(f['cycle/s'])} step(s) written; the last did not converge and is left out",
+                  file=sys.stderr)
     name = os.path.splitext(os.path.basename(a.result))[0]
     cyc = f["cycle"]
     mm, um = 1e3, 1e6
@@ -141,7 +162,11 @@ def main():
                  ("D", cyc.attrs["s_D"]), last]
         fig, (ap_, ah) = plt.subplots(2, 1, figsize=(7, 6.5), sharex=True)
         for label, target in picks:
-            k = min(nearest(s, target * mm), p.shape[0] - 1)
+            # The nearest step that converged (a failed step's row holds a failed attempt).
+            usable = np.setdiff1d(np.arange(min(len(s), p.shape[0])), failed)
+            if usable.size == 0:
+                continue
+            k = int(usable[nearest(s[usable], target * mm)])
             tag = f"{label} (s = {s[k]:.2f} mm)"
             ap_.plot(x, p[k, :] / 1e9, label=tag)
             ah.plot(x, h[k, :] * um, label=tag)
@@ -161,10 +186,10 @@ def main():
 
     # Fig. 6: film thickness and pressure along the path.
     fig, (ah, ap_) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
-    ah.plot(s, cyc["h_c"][:] * um, label=r"$h_c$ (x = 0)")
-    ah.plot(s, cyc["h_min"][:] * um, label=r"$h_{min}$")
+    ah.plot(s, film_curve(cyc, "h_c", failed) * um, label=r"$h_c$ (x = 0)")
+    ah.plot(s, film_curve(cyc, "h_min", failed) * um, label=r"$h_{min}$")
     ah.set_ylabel("film thickness [um]")
-    ap_.plot(s, cyc["p_max"][:] / 1e9, color="C3", label=r"$p_{max}$")
+    ap_.plot(s, film_curve(cyc, "p_max", failed) / 1e9, color="C3", label=r"$p_{max}$")
     ap_.set_ylabel("maximum pressure [GPa]")
     ap_.set_xlabel("s, distance from A along the line of action [mm]")
     for axis in (ah, ap_):
@@ -181,19 +206,19 @@ def main():
     # Figs. 5-6: temperature and friction along the path, with the slide-to-roll ratio.
     if "T_max" in cyc:
         fig, (at, af) = plt.subplots(2, 1, figsize=(7, 6.5), sharex=True)
-        at.plot(s, cyc["T_max"][:] - 273.15, label=r"$T_{max}$ (film)")
-        at.plot(s, cyc["T_mid"][:] - 273.15, ls="--", label=r"mid-film $T_{max}$")
+        at.plot(s, film_curve(cyc, "T_max", failed) - 273.15, label=r"$T_{max}$ (film)")
+        at.plot(s, film_curve(cyc, "T_mid", failed) - 273.15, ls="--", label=r"mid-film $T_{max}$")
         # The surfaces' model: the high-speed form of seed 004, or Jaeger's kernel at each
         # tooth's Peclet number (docs/thermal.md "Surface temperatures at any Peclet number").
         model = " (finite Pe)" if finite_peclet(f) else ""
-        at.plot(s, cyc["T1_max"][:] - 273.15, label="pinion surface" + model)
-        at.plot(s, cyc["T2_max"][:] - 273.15, label="wheel surface" + model)
+        at.plot(s, film_curve(cyc, "T1_max", failed) - 273.15, label="pinion surface" + model)
+        at.plot(s, film_curve(cyc, "T2_max", failed) - 273.15, label="wheel surface" + model)
         if "dT_flash_blok" in cyc and "T0" in cyc.attrs:
             # Blok's estimate with the film's own mu (docs/thermal.md "Flash temperature").
-            at.plot(s, cyc.attrs["T0"] + cyc["dT_flash_blok"][:] - 273.15, color="0.3",
+            at.plot(s, cyc.attrs["T0"] + film_curve(cyc, "dT_flash_blok", failed) - 273.15, color="0.3",
                     lw=0.9, ls="-.", label=r"surface by Blok (film's $\mu$)" + model)
         at.set_ylabel("temperature [C]")
-        af.plot(s, cyc["mu"][:], color="C3", label=r"friction coefficient $\mu$")
+        af.plot(s, film_curve(cyc, "mu", failed), color="C3", label=r"friction coefficient $\mu$")
         af.set_ylabel(r"$\mu$ [-]")
         srr = af.twinx()
         srr.plot(s, cyc["SRR"][:], color="0.4", lw=0.9, ls=":", label="SRR")

@@ -35,20 +35,35 @@ void NoteContactSpike(const OutletSpike& spike) {
       kSpikeAdvice);
 }
 
+// Whether step k of a run converged: the notes and figures below are over those steps only (a
+// run stops at a failed step, or leaves it behind with failed_step = "steady_restart_or_skip").
+template <typename Run>
+bool Usable(const Run& r, size_t k) {
+  return r.steps[k].summary.usable();
+}
+
+template <typename Run>
+size_t UsableSteps(const Run& r) {
+  size_t n = 0;
+  for (size_t k = 0; k < r.steps.size(); ++k) n += Usable(r, k);
+  return n;
+}
+
 // Blok's flash temperature along the converged steps, and in thermal runs the film's own
 // hottest surfaces beside it (docs/thermal.md "Flash temperature").
-void PrintCycleFlash(const MeshCycleResult& r, size_t converged_steps) {
-  if (converged_steps == 0 || !r.elastic) return;
+void PrintCycleFlash(const MeshCycleResult& r) {
+  if (UsableSteps(r) == 0 || !r.elastic) return;
   const std::vector<double> flash = r.BlokFlashRises();
   size_t at = 0;
-  for (size_t k = 1; k < converged_steps; ++k)
-    if (flash[k] > flash[at]) at = k;
+  for (size_t k = 1; k < r.steps.size(); ++k)
+    if (Usable(r, k) && flash[k] > flash[at]) at = k;
   std::printf("flash temperature (Blok%s, with each step's mu): max rise %.3g K at s = %.4g mm",
               r.finite_peclet ? ", finite Peclet" : "", flash[at], r.steps[at].s_m * 1e3);
   if (r.thermal) {
     double t1 = 0, t2 = 0;
     const double t0 = r.inlet_temperature_k;
-    for (size_t k = 0; k < converged_steps; ++k) {
+    for (size_t k = 0; k < r.steps.size(); ++k) {
+      if (!Usable(r, k)) continue;
       t1 = std::max(t1, r.steps[k].t1_max_k - t0);
       t2 = std::max(t2, r.steps[k].t2_max_k - t0);
     }
@@ -90,13 +105,13 @@ constexpr const char* kPecletAdvice =
     "rise; [effects] finite_peclet = true includes it (docs/thermal.md \"Surface temperatures "
     "at any Peclet number\")";
 
-void NoteCyclePeclet(const MeshCycleResult& r, size_t converged_steps) {
+void NoteCyclePeclet(const MeshCycleResult& r) {
   // With effects.finite_peclet the surfaces and the flash temperature conduct along x.
   if (!r.thermal || !r.elastic || r.finite_peclet) return;
   LowestPeclet lowest;
-  for (size_t k = 0; k < converged_steps; ++k) {
+  for (size_t k = 0; k < r.steps.size(); ++k) {
     const MeshCycleStep& st = r.steps[k];
-    if (!(st.load_n_per_m > 0)) continue;
+    if (!Usable(r, k) || !(st.load_n_per_m > 0)) continue;
     const double b =
         LineContactHertz(st.load_n_per_m, st.reduced_radius_m, r.e_prime_pa).half_width_m;
     ConsiderPeclet(r.solids, b, st.u1_m_s, st.u2_m_s, k, &lowest);
@@ -142,8 +157,8 @@ void NoteRestarts(const std::vector<Step>& steps, Where where) {
   if (count > kListed) list += ", ...";
   std::printf(
       "note: %zu of %zu time steps did not converge; each such film is the steady one at its "
-      "time, and the run marched on from it ([numerics] failed_step = \"steady_restart\"; "
-      "\"stop\" ends the run there instead): %s. The first failure: %s\n",
+      "time, and the run marched on from it ([numerics] failed_step; \"stop\" ends the run "
+      "there instead): %s. The first failure: %s\n",
       count, steps.size() - 1, list.c_str(), first.c_str());
 }
 
@@ -153,13 +168,39 @@ std::string Where(const char* format, size_t k, double value) {
   return buf;
 }
 
-void NoteCycleSpikes(const MeshCycleResult& r, size_t converged_steps) {
+// On stderr: the steps that did not converge (the one where the run stopped, and those left
+// behind with failed_step = "steady_restart_or_skip") and why the first one failed.
+template <typename Step, typename Where>
+void ReportFailedSteps(const std::vector<Step>& steps, Where where) {
+  constexpr size_t kListed = 8;
+  std::vector<size_t> failed;
+  for (size_t k = 0; k < steps.size(); ++k)
+    if (!steps[k].summary.usable()) failed.push_back(k);
+  if (failed.empty()) {  // not expected: a run ends early only at a failed step
+    std::fprintf(stderr, "tehl run: the run did not reach its last step\n");
+    return;
+  }
+  const Step& first = steps[failed.front()];
+  if (failed.size() == 1) {
+    std::fprintf(stderr, "tehl run: %s did not converge: %s\n",
+                 where(failed.front(), first).c_str(), first.summary.message.c_str());
+    return;
+  }
+  std::string list;
+  for (size_t i = 0; i < failed.size() && i < kListed; ++i)
+    list += (i ? ", " : "") + where(failed[i], steps[failed[i]]);
+  if (failed.size() > kListed) list += ", ...";
+  std::fprintf(stderr, "tehl run: %zu steps did not converge (%s); the first: %s\n", failed.size(),
+               list.c_str(), first.summary.message.c_str());
+}
+
+void NoteCycleSpikes(const MeshCycleResult& r) {
   const std::vector<OutletSpike> spikes = r.OutletSpikes();
   int narrow = 0;
   OutletSpike narrowest;
   size_t at = 0;
-  for (size_t k = 0; k < converged_steps && k < spikes.size(); ++k) {
-    if (spikes[k].resolved()) continue;
+  for (size_t k = 0; k < r.steps.size() && k < spikes.size(); ++k) {
+    if (!Usable(r, k) || spikes[k].resolved()) continue;
     ++narrow;
     if (narrow == 1 || spikes[k].width_cells < narrowest.width_cells) {
       narrowest = spikes[k];
@@ -171,7 +212,7 @@ void NoteCycleSpikes(const MeshCycleResult& r, size_t converged_steps) {
       "note: in %d of the %zu films along the path (A and the steps) the outlet pressure spike "
       "spans fewer than %.0f cells at half its height (narrowest %.1f cells, %.4g GPa, at s = %.4g "
       "mm): %s\n",
-      narrow, converged_steps, kSpikeResolvedCells, narrowest.width_cells,
+      narrow, UsableSteps(r), kSpikeResolvedCells, narrowest.width_cells,
       narrowest.pressure_pa * 1e-9, r.steps[at].s_m * 1e3, kSpikeAdvice);
 }
 
@@ -192,17 +233,18 @@ void NoteContactInlet(const InletTruncation& t, double x_start_b) {
       t.InletFor(x_start_b, kInletTargetDeficit), kInletAdvice, 100 * kInletTargetDeficit);
 }
 
-void NoteCycleInlet(const MeshCycleResult& r, size_t converged_steps) {
+void NoteCycleInlet(const MeshCycleResult& r) {
   const std::vector<InletTruncation> inlet = r.InletTruncations();
   size_t worst = inlet.size();
-  for (size_t k = 0; k < converged_steps && k < inlet.size(); ++k)
-    if (inlet[k].estimated &&
+  for (size_t k = 0; k < r.steps.size() && k < inlet.size(); ++k)
+    if (Usable(r, k) && inlet[k].estimated &&
         (worst == inlet.size() || inlet[k].film_deficit > inlet[worst].film_deficit))
       worst = k;
   if (worst == inlet.size() || inlet[worst].film_deficit <= kInletNoteDeficit) return;
   const size_t pitch = static_cast<size_t>(r.PitchStep());
   std::string at_pitch;
-  if (pitch < converged_steps && pitch < inlet.size() && inlet[pitch].estimated) {
+  if (pitch < r.steps.size() && Usable(r, pitch) && pitch < inlet.size() &&
+      inlet[pitch].estimated) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "; %.2g %% at the pitch point", 100 * inlet[pitch].film_deficit);
     at_pitch = buf;
@@ -237,9 +279,9 @@ int RunGear(const RunArgs& a) {
   }
   if (r.resumed_from_step > 0)
     std::printf("resumed from the checkpoint at step %d\n", r.resumed_from_step);
-  // A cycle that stopped reports only its converged steps (those before the failed one).
-  size_t ok = 0;
-  while (ok < r.steps.size() && r.steps[ok].summary.usable()) ++ok;
+  // A cycle reports only its converged steps (not the failed one where it stopped, nor failed
+  // steps it left behind: failed_step = "steady_restart_or_skip").
+  const size_t ok = UsableSteps(r);
   std::printf("mesh cycle A..E: %zu of %d steps (%s), grid %zu nodes, %.1f s\n", r.steps.size() - 1,
               r.planned_steps, r.step_rule.c_str(), r.x_m.size(), r.wall_time_s);
   if (r.begin_m > 0 || r.end_m < r.length_m)
@@ -248,36 +290,43 @@ int RunGear(const RunArgs& a) {
         "after %.4g mm (A..E = 0..%.4g mm); the films are solved in between\n",
         r.begin_m * 1e3, r.end_m * 1e3, r.length_m * 1e3);
   const size_t pitch_step = static_cast<size_t>(r.PitchStep());
-  if (pitch_step < ok && (ok == r.steps.size() || r.steps[ok - 1].s_m >= r.s_c_m)) {
+  const bool passed_pitch = !r.steps.empty() && r.steps.back().s_m >= r.s_c_m;
+  if (pitch_step < r.steps.size() && Usable(r, pitch_step) &&
+      (passed_pitch || r.steps.size() == static_cast<size_t>(r.planned_steps) + 1)) {
     const MeshCycleStep& pitch = r.steps[pitch_step];
     std::printf("at the pitch point (s = %.4g mm): h_c = %.6g m, h_min = %.6g m, p_max = %.6g Pa\n",
                 pitch.s_m * 1e3, pitch.h_c_m, pitch.h_min_m, pitch.p_max_pa);
+  } else if (passed_pitch) {
+    std::printf("the step at the pitch point (s = %.4g mm) did not converge\n", r.s_c_m * 1e3);
   } else {
     std::printf("the cycle stopped before the pitch point (s = %.4g mm)\n", r.s_c_m * 1e3);
   }
   if (r.thermal && ok > 0) {  // the hottest converged step and the mean friction along the path
-    const auto end = r.steps.begin() + static_cast<std::ptrdiff_t>(ok);
-    const auto hottest = std::max_element(
-        r.steps.begin(), end, [](const auto& a, const auto& b) { return a.t_max_k < b.t_max_k; });
+    size_t hottest = 0;
     double mu = 0;
-    for (auto k = r.steps.begin(); k != end; ++k) mu += k->friction_coefficient;
-    std::printf("thermal: T_max = %.5g K at s = %.4g mm (SRR %+.3f), mean mu = %.4g%s\n",
-                hottest->t_max_k, hottest->s_m * 1e3, hottest->srr, mu / static_cast<double>(ok),
+    for (size_t k = 0; k < r.steps.size(); ++k) {
+      if (!Usable(r, k)) continue;
+      if (r.steps[k].t_max_k > r.steps[hottest].t_max_k) hottest = k;
+      mu += r.steps[k].friction_coefficient;
+    }
+    const MeshCycleStep& h = r.steps[hottest];
+    std::printf("thermal: T_max = %.5g K at s = %.4g mm (SRR %+.3f), mean mu = %.4g%s\n", h.t_max_k,
+                h.s_m * 1e3, h.srr, mu / static_cast<double>(ok),
                 ok == r.steps.size() ? "" : " (converged steps)");
   }
-  PrintCycleFlash(r, ok);
-  NoteCyclePeclet(r, ok);
-  NoteCycleSpikes(r, ok);
-  NoteCycleInlet(r, ok);
+  PrintCycleFlash(r);
+  NoteCyclePeclet(r);
+  NoteCycleSpikes(r);
+  NoteCycleInlet(r);
   NoteRestarts(r.steps, [](size_t k, const MeshCycleStep& s) {
     return Where("step %zu (s = %.4g mm)", k, s.s_m * 1e3);
   });
   std::printf("wrote %s%s%s\n", r.hdf5_path.c_str(), r.csv_path.empty() ? "" : " and ",
               r.csv_path.c_str());
   if (!r.converged()) {
-    const MeshCycleStep& last = r.steps.back();
-    std::fprintf(stderr, "tehl run: step %zu (s = %.4g mm) did not converge: %s\n",
-                 r.steps.size() - 1, last.s_m * 1e3, last.summary.message.c_str());
+    ReportFailedSteps(r.steps, [](size_t k, const MeshCycleStep& s) {
+      return Where("step %zu (s = %.4g mm)", k, s.s_m * 1e3);
+    });
     return kExitNotConverged;
   }
   return kExitOk;
@@ -310,8 +359,9 @@ int RunContact(const RunArgs& a) {
   });
   std::printf("wrote %s and %s\n", r.profile_csv.c_str(), r.history_csv.c_str());
   if (!r.converged()) {
-    std::fprintf(stderr, "tehl run: the solver did not converge: %s\n",
-                 last.summary.message.c_str());
+    ReportFailedSteps(r.steps, [](size_t k, const ContactStepRecord& s) {
+      return Where("step %zu (t = %.4g s)", k, s.time_s);
+    });
     return kExitNotConverged;
   }
   return kExitOk;

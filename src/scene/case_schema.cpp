@@ -163,8 +163,10 @@ SectionSpec NumericsSection() {
           Text(
               "failed_step", "\"steady_restart\"",
               "a time step that does not converge: stop the run there, or solve the steady film at "
-              "its time and march on from it (the step is flagged in the results)",
-              {"stop", "steady_restart"}),
+              "its time and march on from it (the step is flagged in the results); "
+              "steady_restart_or_skip: where the steady film fails too, leave that step failed "
+              "and march on from the last converged film",
+              {"stop", "steady_restart", "steady_restart_or_skip"}),
       }};
 }
 

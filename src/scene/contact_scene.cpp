@@ -142,13 +142,21 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   if (in.steps > 0 && result.steps.back().summary.usable()) {
     solver.BeginTransient(c, state);
     const double dt = (in.t.back() - t0) / in.steps;
+    int skipped = 0;  // failed steps in a row left behind (failed_step = "..._or_skip")
     for (int k = 1; k <= in.steps; ++k) {
       const double t = t0 + k * dt;
       c = conditions(t);
       start = Clock::now();
-      internal::MarchedStep m = internal::StepOrRestart(solver, c, dt, &state, film.steady_restart);
+      // From the last converged level, across the skipped steps.
+      internal::MarchedStep m = internal::StepOrRestart(solver, c, (1 + skipped) * dt, &state,
+                                                        film.steady_restart, film.skip_failed);
       record(t, c, m.summary, start, std::move(m.restart_reason));
+      if (m.skipped && ++skipped < internal::kMaxSkippedInARow && k < in.steps) {
+        internal::ResumeAfterSkip(solver, &m, &state);
+        continue;
+      }
       if (!result.steps.back().summary.usable()) break;
+      skipped = 0;
     }
   }
 

@@ -110,7 +110,9 @@ FilmCase ReadFilmCase(Document& doc) {
   o.tolerance = doc.Real("numerics", "newton_tolerance");
   o.max_iterations = static_cast<int>(doc.Int("numerics", "max_newton_iterations"));
   o.film_nodes = static_cast<int>(doc.Int("numerics", "film_nodes"));
-  f.steady_restart = doc.String("numerics", "failed_step") == "steady_restart";
+  const std::string failed_step = doc.String("numerics", "failed_step");
+  f.steady_restart = failed_step != "stop";
+  f.skip_failed = failed_step == "steady_restart_or_skip";
   if (o.tolerance >= 1.0)
     doc.Problem("numerics", "newton_tolerance", "must be < 1", "a small positive number, e.g. 1e-8");
 

@@ -28,6 +28,9 @@ struct FilmCase {
   // [numerics] failed_step = "steady_restart": a failed time step is replaced by the steady
   // film at its time (step_restart.hpp); false: the run stops at it.
   bool steady_restart = true;
+  // failed_step = "steady_restart_or_skip": a step whose steady film fails too is left failed
+  // and the run goes on from the last converged film (step_restart.hpp).
+  bool skip_failed = false;
 };
 
 // The lubricant at the inlet state (p = 0, T0); deta_dp = 0 when the film is not

@@ -337,13 +337,21 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
     if (r.steps.back().summary.usable()) solver.BeginTransient(c, state);
   }
   if (r.steps.back().summary.usable()) {
+    size_t skipped = 0;  // failed steps in a row left behind (failed_step = "..._or_skip")
     for (size_t k = first; k < s_steps.size(); ++k) {
       st = cycle.At(s_steps[k], true);
       c = conditions(st);
-      const double dt = (s_steps[k] - s_steps[k - 1]) / path.contact_speed_m_s();
-      internal::MarchedStep m = internal::StepOrRestart(solver, c, dt, &state, film.steady_restart);
+      // From the last converged level, across the skipped steps.
+      const double dt = (s_steps[k] - s_steps[k - 1 - skipped]) / path.contact_speed_m_s();
+      internal::MarchedStep m =
+          internal::StepOrRestart(solver, c, dt, &state, film.steady_restart, film.skip_failed);
       record(st, m.summary, std::move(m.restart_reason));
+      if (m.skipped && ++skipped < internal::kMaxSkippedInARow && k + 1 < s_steps.size()) {
+        internal::ResumeAfterSkip(solver, &m, &state);
+        continue;
+      }
       if (!r.steps.back().summary.usable()) break;
+      skipped = 0;
       if (checkpoints && !checkpoints_off && ro.checkpoint_every > 0 &&
           k % ro.checkpoint_every == 0 && k + 1 < s_steps.size()) {
         // A checkpoint is a convenience: one that cannot be written (a full disk, a path

@@ -20,13 +20,15 @@ MarchedStep StepOrRestart(LineContactSolver& solver,
                           const ContactConditions& c,
                           double dt_s,
                           FilmState* state,
-                          bool steady_restart) {
+                          bool steady_restart,
+                          bool skip) {
   std::optional<FilmState> before;
-  ContactConditions c_prev;  // the conditions of the level before the step
+  LineContactSolver::TransientHistory history;
   if (steady_restart) {
     before = *state;
-    c_prev = solver.SaveTransient().c_prev;
+    history = solver.SaveTransient();
   }
+  const ContactConditions& c_prev = history.c_prev;  // the conditions before the step
   MarchedStep out;
   out.summary = solver.Step(c, dt_s, state);
   if (out.summary.usable() || !steady_restart) return out;
@@ -57,8 +59,14 @@ MarchedStep StepOrRestart(LineContactSolver& solver,
           "; the steady film at this time did not converge either, from the "
           "state before the step (" +
           ToString(s.termination) + ": " + s.message + ") nor cold (" + ToString(sc.termination) +
-          ": " + sc.message + ")";
+          ": " + sc.message + ")" +
+          (skip ? "" : "; [numerics] failed_step = \"steady_restart_or_skip\" goes on past it");
       AddCost(sc, &out.summary);
+      if (skip) {
+        out.skipped = true;
+        out.resume = std::move(*before);
+        out.resume_history = std::move(history);
+      }
       return out;
     }
     steady = std::move(cold);
@@ -72,6 +80,11 @@ MarchedStep StepOrRestart(LineContactSolver& solver,
   s.substeps = out.summary.substeps;
   out.summary = std::move(s);
   return out;
+}
+
+void ResumeAfterSkip(LineContactSolver& solver, MarchedStep* step, FilmState* state) {
+  *state = std::move(step->resume);
+  solver.RestoreTransient(step->resume_history);
 }
 
 }  // namespace tehl::internal

@@ -20,6 +20,12 @@
 namespace tehl::internal {
 
 struct MarchedStep {
+  // The step failed, its steady films too, and skipping was asked for: `state` holds the failed
+  // attempt's best iterate (for the step's row); the run goes on from `resume` and the solver
+  // history `resume_history` (the last converged level, which ResumeAfterSkip restores).
+  bool skipped = false;
+  FilmState resume;
+  LineContactSolver::TransientHistory resume_history;
   // The step's summary, or that of the steady solve that replaced it (its wall time, total,
   // GMRES and coupling iterations then include the failed attempt, and `substeps` is the
   // attempt's: 4 after the solver's whole ladder).
@@ -33,11 +39,22 @@ struct MarchedStep {
 
 // Advances `state` by dt_s to the conditions c (LineContactSolver::Step), with the steady
 // fallback above when `steady_restart` is true. After a restart the solver's transient
-// history starts at the steady film.
+// history starts at the steady film. With `skip` (failed_step = "steady_restart_or_skip"),
+// a step whose steady films fail too comes back `skipped`; the next step then spans the
+// skipped ones (its dt from the resumed level's time).
 MarchedStep StepOrRestart(LineContactSolver& solver,
                           const ContactConditions& c,
                           double dt_s,
                           FilmState* state,
-                          bool steady_restart);
+                          bool steady_restart,
+                          bool skip = false);
+
+// After a skipped step has been recorded: the state and the solver history of the last
+// converged level again.
+void ResumeAfterSkip(LineContactSolver& solver, MarchedStep* step, FilmState* state);
+
+// A run that skips failed steps stops once this many in a row have failed: the film can then
+// no longer be followed, and every further attempt costs as much as a failed step.
+constexpr int kMaxSkippedInARow = 3;
 
 }  // namespace tehl::internal

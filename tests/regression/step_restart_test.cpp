@@ -184,6 +184,84 @@ TEST(StepRestart, AFailedStepIsReplacedByTheSteadyFilmAndTheRunGoesOn) {
   fs::remove_all(dir);
 }
 
+// failed_step = "steady_restart_or_skip": a time step whose steady film fails too is left
+// failed and the run goes on from the last converged film. Steel discs (R1 = R2 = 20 mm,
+// SAE 40, isothermal, 257 nodes, 4 steps of 0.1 ms) at 100 kN/m and 1 m/s, with a load table
+// that puts 30 MN/m (p_H about 10 GPa, under the b <= 0.2 R limit of the case reader) at the
+// times of the steps listed in `overloaded`: neither the transient step nor the steady film
+// (from the state before it, nor cold) converges there.
+std::string Overloaded(const fs::path& dir,
+                       const std::string& failed_step,
+                       const std::vector<int>& overloaded) {
+  std::string loads;
+  for (int k = 0; k <= 4; ++k) {
+    const bool heavy = std::find(overloaded.begin(), overloaded.end(), k) != overloaded.end();
+    loads += std::string(k ? ", " : "") + (heavy ? "3.0e7" : "1.0e5");
+  }
+  const fs::path path =
+      dir / ("overloaded_" + failed_step + std::to_string(overloaded.size()) + ".toml");
+  std::ofstream(path) << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\n"
+                      << "youngs_modulus_1_pa = 210e9\npoisson_ratio_1 = 0.3\n"
+                      << "youngs_modulus_2_pa = 210e9\npoisson_ratio_2 = 0.3\n"
+                      << "speed_1_m_s = 1.0\nspeed_2_m_s = 1.0\nload_n_per_m = 1.0e5\n"
+                      << "time_s = [0, 1e-4, 2e-4, 3e-4, 4e-4]\nload_table_n_per_m = [" << loads
+                      << "]\nsteps = 4\n[lubricant]\nname = \"sae40\"\n"
+                      << "[numerics]\ngrid_points = 257\nfailed_step = \"" << failed_step << "\"\n";
+  return path.string();
+}
+
+TEST(StepRestart, SkippingLeavesAStepWhoseSteadyFilmFailsTooAndGoesOn) {
+  const fs::path dir = testing::ScratchPath("tehl_step_restart", "skip");
+  fs::create_directories(dir);
+  // "steady_restart" stops at step 2 and says how to go on.
+  const ContactRunResult stopped = RunCase(Overloaded(dir, "steady_restart", {2}), dir);
+  ASSERT_EQ(stopped.steps.size(), 3u);
+  EXPECT_FALSE(stopped.steps[2].summary.usable());
+  EXPECT_NE(stopped.steps[2].summary.message.find("steady_restart_or_skip"), std::string::npos)
+      << stopped.steps[2].summary.message;
+
+  const std::string skipping = Overloaded(dir, "steady_restart_or_skip", {2});
+  const ContactRunResult r = RunCase(skipping, dir);
+  ASSERT_EQ(r.steps.size(), 5u);
+  EXPECT_FALSE(r.converged());
+  EXPECT_EQ(r.Restarts(), 0);
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    EXPECT_EQ(r.steps[k].summary.usable(), k != 2)
+        << "step " << k << ": " << r.steps[k].summary.message;
+  // Steps 3 and 4 go on from the film of step 1, under the same conditions (100 kN/m, 1 m/s,
+  // a steady film since step 0): the same film, already converged.
+  EXPECT_NEAR(r.steps[3].h_c_m / r.steps[1].h_c_m, 1.0, 1e-9);
+  EXPECT_NEAR(r.steps[4].p_max_pa / r.steps[1].p_max_pa, 1.0, 1e-9);
+  EXPECT_EQ(r.steps[2].restart_reason, "");
+  // The steps CSV says which row failed.
+  const auto cells = testing::ReadCsvCells(r.history_csv);
+  ASSERT_EQ(cells.size(), 6u);
+  const auto col = std::find(cells[0].begin(), cells[0].end(), "termination") - cells[0].begin();
+  ASSERT_LT(static_cast<size_t>(col), cells[0].size());
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    EXPECT_EQ(cells[k + 1][col] == "converged", k != 2) << k << ": " << cells[k + 1][col];
+  // `tehl run`: not converged (exit 1), naming the failed step; the final film is reported.
+  const testing::RunResult run =
+      testing::RunTehl("run -q -o '" + dir.string() + "' '" + skipping + "'");
+  ASSERT_TRUE(run.exited);
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("step 2 (t = 0.0002 s) did not converge"), std::string::npos) << run.err;
+  EXPECT_NE(run.out.find("h_c = "), std::string::npos) << run.out;
+
+  // Three failed steps in a row end the run there.
+  const ContactRunResult three = RunCase(Overloaded(dir, "steady_restart_or_skip", {1, 2, 3}), dir);
+  ASSERT_EQ(three.steps.size(), 4u);
+  for (size_t k = 1; k < 4; ++k) EXPECT_FALSE(three.steps[k].summary.usable()) << k;
+  const testing::RunResult run3 =
+      testing::RunTehl("run -q -o '" + dir.string() + "' '" +
+                       Overloaded(dir, "steady_restart_or_skip", {1, 2, 3}) + "'");
+  EXPECT_EQ(run3.exit_code, 1) << run3.err;
+  EXPECT_NE(run3.err.find("3 steps did not converge (step 1 (t = 0.0001 s), step 2"),
+            std::string::npos)
+      << run3.err;
+  fs::remove_all(dir);
+}
+
 // The thermal seed 004 cycle on 513 nodes with 600 steps (cases/seed004_sae40.toml with
 // [numerics] steps = 600): one step after B does not converge (docs/thermal.md, "The seed 004
 // cycle at full resolution"). `tehl run` completes the cycle (exit 0), notes the restart, and

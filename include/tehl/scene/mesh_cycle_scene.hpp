@@ -129,7 +129,9 @@ int AutomaticMeshCycleSteps(double transits);
 // flagged (MeshCycleStep::restart_reason; [numerics] failed_step = "steady_restart", the
 // default); one that cannot be replaced (failed_step = "stop", the steady film at A, or a
 // steady film that fails too) stops the run, which is then still written (the Summary of
-// each step says how it ended).
+// each step says how it ended). With failed_step = "steady_restart_or_skip" a step whose
+// steady film fails too is recorded as failed and the run goes on from the last converged
+// film (three failed steps in a row stop it).
 MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOptions& options);
 
 }  // namespace tehl
