@@ -3,6 +3,7 @@ list(APPEND TEHL_CLI_SOURCES
   src/cli/main.cpp
   src/cli/case_command.cpp
   src/cli/run_command.cpp
+  src/cli/run_notes.cpp
   src/cli/lubricant_command.cpp
   src/cli/gear_command.cpp
   src/cli/plot_command.cpp

@@ -1,0 +1,195 @@
+// The notes `tehl run` prints beside a run's results (run_notes.hpp).
+#include "cli/run_notes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "tehl/ehl/surface_temperature.hpp"
+#include "tehl/units.hpp"
+
+namespace tehl::cli {
+
+// The outlet spike's height converges only once the grid resolves it (docs/accuracy.md,
+// include/tehl/ehl/outlet_spike.hpp): say so when it spans fewer than kSpikeResolvedCells.
+constexpr const char* kSpikeAdvice =
+    "p_max (and a temperature peak on the spike) is not grid-converged: more "
+    "[numerics] grid_points resolve it (docs/results.md)";
+
+void NoteContactSpike(const OutletSpike& spike) {
+  if (spike.resolved()) return;
+  std::printf(
+      "note: the outlet pressure spike (%.4g GPa at x = %.4g mm) spans %.1f cells at half its "
+      "height above the dip before it, fewer than %.0f: %s\n",
+      spike.pressure_pa * 1e-9, spike.x_m * 1e3, spike.width_cells, kSpikeResolvedCells,
+      kSpikeAdvice);
+}
+
+// Blok's flash temperature along the converged steps, and in thermal runs the film's own
+// hottest surfaces beside it (docs/thermal.md "Flash temperature").
+void PrintCycleFlash(const MeshCycleResult& r) {
+  if (UsableSteps(r) == 0 || !r.elastic) return;
+  const std::vector<double> flash = r.BlokFlashRises();
+  size_t at = 0;
+  for (size_t k = 1; k < r.steps.size(); ++k)
+    if (Usable(r, k) && flash[k] > flash[at]) at = k;
+  std::printf("flash temperature (Blok%s, with each step's mu): max rise %.3g K at s = %.4g mm",
+              r.finite_peclet ? ", finite Peclet" : "", flash[at], r.steps[at].s_m * 1e3);
+  if (r.thermal) {
+    double t1 = 0, t2 = 0;
+    const double t0 = r.inlet_temperature_k;
+    for (size_t k = 0; k < r.steps.size(); ++k) {
+      if (!Usable(r, k)) continue;
+      t1 = std::max(t1, r.steps[k].t1_max_k - t0);
+      t2 = std::max(t2, r.steps[k].t2_max_k - t0);
+    }
+    std::printf("; the film's surfaces: max rise %.3g K (pinion), %.3g K (wheel)", t1, t2);
+  }
+  std::printf("\n");
+}
+
+namespace {
+
+// The surface temperatures (seed 004 eqs. 14-15) and Blok's estimate use the high-speed
+// moving heat source, 1-D conduction into the depth, which needs a Peclet number
+// Pe = u b / (2 kappa) of about 5 or more (K.L. Johnson, Contact Mechanics, 1985, section
+// 13.3). Notes the smallest Pe of either solid along a thermal cycle when it is below that.
+constexpr double kHighPeclet = 5.0;
+
+// The smallest Peclet number u b / (2 kappa) of either solid over (b, u1, u2) samples, and
+// where: the sample index and the body (0, 1). Samples with b or a speed <= 0 are skipped.
+struct LowestPeclet {
+  double pe = std::numeric_limits<double>::infinity();
+  size_t at = 0;
+  int body = 0;
+  bool Low() const { return pe < kHighPeclet; }
+};
+
+void ConsiderPeclet(
+    const ContactSolids& solids, double b, double u1, double u2, size_t k, LowestPeclet* lowest) {
+  if (!(b > 0)) return;
+  const SolidThermal* solid[] = {&solids.body1, &solids.body2};
+  const double speed[] = {std::abs(u1), std::abs(u2)};
+  for (int i = 0; i < 2; ++i) {
+    if (!(speed[i] > 0)) continue;
+    const double pe = MovingHeatSource::DecayRate(*solid[i], speed[i]) * b;
+    if (pe < lowest->pe) *lowest = {pe, k, i};
+  }
+}
+
+constexpr const char* kPecletAdvice =
+    "there the surface temperatures, which neglect conduction along the surface (the "
+    "high-speed moving heat source of seed 004 eqs. 14-15, and Blok's estimate), overstate the "
+    "rise; [effects] finite_peclet = true includes it (docs/thermal.md \"Surface temperatures "
+    "at any Peclet number\")";
+
+}  // namespace
+
+void NoteCyclePeclet(const MeshCycleResult& r) {
+  // With effects.finite_peclet the surfaces and the flash temperature conduct along x.
+  if (!r.thermal || !r.elastic || r.finite_peclet) return;
+  LowestPeclet lowest;
+  for (size_t k = 0; k < r.steps.size(); ++k) {
+    const MeshCycleStep& st = r.steps[k];
+    if (!Usable(r, k) || !(st.load_n_per_m > 0)) continue;
+    const double b =
+        LineContactHertz(st.load_n_per_m, st.reduced_radius_m, r.e_prime_pa).half_width_m;
+    ConsiderPeclet(r.solids, b, st.u1_m_s, st.u2_m_s, k, &lowest);
+  }
+  if (!lowest.Low()) return;
+  std::printf(
+      "note: the Peclet number u b / (2 kappa) of the %s falls to %.3g (at s = %.4g mm), below "
+      "about %.0f: %s\n",
+      lowest.body == 0 ? "pinion" : "wheel", lowest.pe, r.steps[lowest.at].s_m * 1e3, kHighPeclet,
+      kPecletAdvice);
+}
+
+// The same for a [contact] run, over its converged levels.
+void NoteContactPeclet(const ContactRunResult& r) {
+  if (!r.thermal || r.finite_peclet) return;
+  LowestPeclet lowest;
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    if (r.steps[k].summary.usable())
+      ConsiderPeclet(r.solids, r.steps[k].half_width_m, r.steps[k].u1_m_s, r.steps[k].u2_m_s, k,
+                     &lowest);
+  if (!lowest.Low()) return;
+  std::printf(
+      "note: the Peclet number u b / (2 kappa) of body %d falls to %.3g (at t = %.4g s), below "
+      "about %.0f: %s\n",
+      lowest.body + 1, lowest.pe, r.steps[lowest.at].time_s, kHighPeclet, kPecletAdvice);
+}
+
+std::string Where(const char* format, size_t k, double value) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, format, k, value);
+  return buf;
+}
+
+void NoteCycleSpikes(const MeshCycleResult& r) {
+  const std::vector<OutletSpike> spikes = r.OutletSpikes();
+  int narrow = 0;
+  OutletSpike narrowest;
+  size_t at = 0;
+  for (size_t k = 0; k < r.steps.size() && k < spikes.size(); ++k) {
+    if (!Usable(r, k) || spikes[k].resolved()) continue;
+    ++narrow;
+    if (narrow == 1 || spikes[k].width_cells < narrowest.width_cells) {
+      narrowest = spikes[k];
+      at = k;
+    }
+  }
+  if (narrow == 0) return;
+  std::printf(
+      "note: in %d of the %zu films along the path (A and the steps) the outlet pressure spike "
+      "spans fewer than %.0f cells at half its height (narrowest %.1f cells, %.4g GPa, at s = %.4g "
+      "mm): %s\n",
+      narrow, UsableSteps(r), kSpikeResolvedCells, narrowest.width_cells,
+      narrowest.pressure_pa * 1e-9, r.steps[at].s_m * 1e3, kSpikeAdvice);
+}
+
+// The inlet note: a film thinned by more than kInletNoteDeficit by the truncated inlet
+// (EstimateInletTruncation; docs/results.md, "The inlet note"), with the x_start_b that brings
+// the deficit to kInletTargetDeficit (p_in ~ |x0|^-3).
+constexpr double kInletNoteDeficit = 0.005;
+constexpr double kInletTargetDeficit = 0.002;
+constexpr const char* kInletAdvice = "with grid_points raised in proportion (same spacing)";
+
+void NoteContactInlet(const InletTruncation& t, double x_start_b) {
+  if (!t.estimated || t.film_deficit <= kInletNoteDeficit) return;
+  std::printf(
+      "note: the inlet at x_start_b = %.3g cuts off %.3g MPa of inlet pressure: the film is "
+      "about %.2g %% thinner than with an unbounded inlet (Grubin estimate, docs/results.md); "
+      "[numerics] x_start_b = %.3g %s brings that to about %.2g %%\n",
+      x_start_b, t.missing_pressure_pa * 1e-6, 100 * t.film_deficit,
+      t.InletFor(x_start_b, kInletTargetDeficit), kInletAdvice, 100 * kInletTargetDeficit);
+}
+
+void NoteCycleInlet(const MeshCycleResult& r) {
+  const std::vector<InletTruncation> inlet = r.InletTruncations();
+  size_t worst = inlet.size();
+  for (size_t k = 0; k < r.steps.size() && k < inlet.size(); ++k)
+    if (Usable(r, k) && inlet[k].estimated &&
+        (worst == inlet.size() || inlet[k].film_deficit > inlet[worst].film_deficit))
+      worst = k;
+  if (worst == inlet.size() || inlet[worst].film_deficit <= kInletNoteDeficit) return;
+  const size_t pitch = static_cast<size_t>(r.PitchStep());
+  std::string at_pitch;
+  if (pitch < r.steps.size() && Usable(r, pitch) && pitch < inlet.size() &&
+      inlet[pitch].estimated) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "; %.2g %% at the pitch point", 100 * inlet[pitch].film_deficit);
+    at_pitch = buf;
+  }
+  std::printf(
+      "note: the inlet at x_start_b = %.3g thins the films by up to %.2g %% against an "
+      "unbounded inlet (at s = %.4g mm%s; Grubin estimate, docs/results.md): [numerics] "
+      "x_start_b = %.3g %s brings that to about %.2g %%\n",
+      r.x_start_b, 100 * inlet[worst].film_deficit, r.steps[worst].s_m * 1e3, at_pitch.c_str(),
+      inlet[worst].InletFor(r.x_start_b, kInletTargetDeficit), kInletAdvice,
+      100 * kInletTargetDeficit);
+}
+
+}  // namespace tehl::cli

@@ -1,0 +1,101 @@
+// What `tehl run` prints beside a run's results (docs/results.md): the flash temperature along
+// a cycle, and notes where a film's resolution, inlet or Peclet number limits what it says,
+// where time steps were restarted from the steady film, and which steps did not converge.
+// Private to src/cli.
+#pragma once
+
+#include <cstddef>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "tehl/ehl/inlet_truncation.hpp"
+#include "tehl/ehl/outlet_spike.hpp"
+#include "tehl/scene/contact_scene.hpp"
+#include "tehl/scene/mesh_cycle_scene.hpp"
+
+namespace tehl::cli {
+
+// Whether step k of a run converged: the notes and figures below are over those steps only (a
+// run stops at a failed step, or leaves it behind with failed_step = "steady_restart_or_skip").
+template <typename Run>
+bool Usable(const Run& r, size_t k) {
+  return r.steps[k].summary.usable();
+}
+
+template <typename Run>
+size_t UsableSteps(const Run& r) {
+  size_t n = 0;
+  for (size_t k = 0; k < r.steps.size(); ++k) n += Usable(r, k);
+  return n;
+}
+
+// Blok's flash temperature along the converged steps, and in thermal runs the film's own
+// hottest surfaces beside it (docs/thermal.md "Flash temperature").
+void PrintCycleFlash(const MeshCycleResult& r);
+
+// Notes when the surfaces' Peclet number falls below about 5 (mesh cycle; [contact] run).
+void NoteCyclePeclet(const MeshCycleResult& r);
+void NoteContactPeclet(const ContactRunResult& r);
+
+// Notes outlet spikes narrower than kSpikeResolvedCells (one film; the films of a cycle).
+void NoteContactSpike(const OutletSpike& spike);
+void NoteCycleSpikes(const MeshCycleResult& r);
+
+// Notes an inlet that thins the film by more than kInletNoteDeficit (one film; a cycle).
+void NoteContactInlet(const InletTruncation& t, double x_start_b);
+void NoteCycleInlet(const MeshCycleResult& r);
+
+// `format` with k and value, e.g. Where("step %zu (s = %.4g mm)", 70, 4.913).
+std::string Where(const char* format, size_t k, double value);
+
+// Steps whose transient solve failed and whose film is the steady one at their time
+// ([numerics] failed_step = "steady_restart"): where they are, and why the first one failed.
+// `where(k, step)` names step k ("step 70 (s = 4.913 mm)").
+template <typename Step, typename Where>
+void NoteRestarts(const std::vector<Step>& steps, Where where) {
+  constexpr size_t kListed = 8;
+  size_t count = 0;
+  std::string list, first;
+  for (size_t k = 0; k < steps.size(); ++k) {
+    if (!steps[k].restarted()) continue;
+    if (count == 0) first = steps[k].restart_reason;
+    if (count < kListed) list += (count ? ", " : "") + where(k, steps[k]);
+    ++count;
+  }
+  if (count == 0) return;
+  if (count > kListed) list += ", ...";
+  std::printf(
+      "note: %zu of %zu time steps did not converge; each such film is the steady one at its "
+      "time, and the run marched on from it ([numerics] failed_step; \"stop\" ends the run "
+      "there instead): %s. The first failure: %s\n",
+      count, steps.size() - 1, list.c_str(), first.c_str());
+}
+
+// On stderr: the steps that did not converge (the one where the run stopped, and those left
+// behind with failed_step = "steady_restart_or_skip") and why the first one failed.
+template <typename Step, typename Where>
+void ReportFailedSteps(const std::vector<Step>& steps, Where where) {
+  constexpr size_t kListed = 8;
+  std::vector<size_t> failed;
+  for (size_t k = 0; k < steps.size(); ++k)
+    if (!steps[k].summary.usable()) failed.push_back(k);
+  if (failed.empty()) {  // not expected: a run ends early only at a failed step
+    std::fprintf(stderr, "tehl run: the run did not reach its last step\n");
+    return;
+  }
+  const Step& first = steps[failed.front()];
+  if (failed.size() == 1) {
+    std::fprintf(stderr, "tehl run: %s did not converge: %s\n",
+                 where(failed.front(), first).c_str(), first.summary.message.c_str());
+    return;
+  }
+  std::string list;
+  for (size_t i = 0; i < failed.size() && i < kListed; ++i)
+    list += (i ? ", " : "") + where(failed[i], steps[failed[i]]);
+  if (failed.size() > kListed) list += ", ...";
+  std::fprintf(stderr, "tehl run: %zu steps did not converge (%s); the first: %s\n", failed.size(),
+               list.c_str(), first.summary.message.c_str());
+}
+
+}  // namespace tehl::cli
