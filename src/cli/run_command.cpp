@@ -76,6 +76,7 @@ int RunGear(const RunArgs& a) {
   PrintCycleFlash(r);
   NoteCyclePeclet(r);
   NoteCycleSpikes(r);
+  NoteCycleEdges(r);
   NoteCycleInlet(r);
   NoteRestarts(r.steps, [](size_t k, const MeshCycleStep& s) {
     return Where("step %zu (s = %.4g mm)", k, s.s_m * 1e3);
@@ -110,6 +111,7 @@ int RunContact(const RunArgs& a) {
   }
   if (last.summary.usable()) {
     NoteContactSpike(last.outlet_spike);
+    NoteContactEdge(last.hertz_edge);
     NoteContactInlet(last.inlet, r.x_start_b);
   }
   NoteContactPeclet(r);

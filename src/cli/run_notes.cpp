@@ -150,6 +150,45 @@ void NoteCycleSpikes(const MeshCycleResult& r) {
       narrowest.pressure_pa * 1e-9, r.steps[at].s_m * 1e3, kSpikeAdvice);
 }
 
+// The edge note: a film whose Hertzian edge spans fewer than kEdgeResolvedCells (include/tehl/
+// ehl/hertz_edge.hpp; docs/results.md, "The edge note").
+constexpr const char* kEdgeAdvice =
+    "more [numerics] grid_points resolve it (the deficit falls as the square of the cells; "
+    "docs/validation.md section 3.1)";
+
+std::string EdgeDeficit(const HertzEdge& e) {
+  if (e.film_deficit > 0.5) return "it is not resolved and may be far too thin";
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "it is likely too thin by up to about %.2g %%",
+                100 * e.film_deficit);
+  return buf;
+}
+
+void NoteContactEdge(const HertzEdge& e) {
+  if (!(e.width_m > 0) || e.resolved()) return;
+  std::printf(
+      "note: the film's Hertzian edge (where the dry gap outside the Hertz zone reaches h_c: "
+      "%.3g um wide) spans %.2g cells, fewer than %.0f: %s; %s\n",
+      e.width_m * 1e6, e.width_cells, kEdgeResolvedCells, EdgeDeficit(e).c_str(), kEdgeAdvice);
+}
+
+void NoteCycleEdges(const MeshCycleResult& r) {
+  const std::vector<HertzEdge> edges = r.HertzEdges();
+  int narrow = 0;
+  size_t at = 0;
+  for (size_t k = 0; k < r.steps.size() && k < edges.size(); ++k) {
+    if (!Usable(r, k) || !(edges[k].width_m > 0) || edges[k].resolved()) continue;
+    if (narrow++ == 0 || edges[k].width_cells < edges[at].width_cells) at = k;
+  }
+  if (narrow == 0) return;
+  std::printf(
+      "note: in %d of the %zu films along the path the Hertzian edge (where the dry gap outside "
+      "the Hertz zone reaches h_c) spans fewer than %.0f cells (fewest %.2g cells at s = %.4g "
+      "mm, where %s): %s\n",
+      narrow, UsableSteps(r), kEdgeResolvedCells, edges[at].width_cells, r.steps[at].s_m * 1e3,
+      EdgeDeficit(edges[at]).c_str(), kEdgeAdvice);
+}
+
 // The inlet note: a film thinned by more than kInletNoteDeficit by the truncated inlet
 // (EstimateInletTruncation; docs/results.md, "The inlet note"), with the x_start_b that brings
 // the deficit to kInletTargetDeficit (p_in ~ |x0|^-3).

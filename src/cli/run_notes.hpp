@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "tehl/ehl/hertz_edge.hpp"
 #include "tehl/ehl/inlet_truncation.hpp"
 #include "tehl/ehl/outlet_spike.hpp"
 #include "tehl/scene/contact_scene.hpp"
@@ -41,6 +42,10 @@ void NoteContactPeclet(const ContactRunResult& r);
 // Notes outlet spikes narrower than kSpikeResolvedCells (one film; the films of a cycle).
 void NoteContactSpike(const OutletSpike& spike);
 void NoteCycleSpikes(const MeshCycleResult& r);
+
+// Notes a film whose Hertzian edge spans fewer than kEdgeResolvedCells (one film; a cycle).
+void NoteContactEdge(const HertzEdge& e);
+void NoteCycleEdges(const MeshCycleResult& r);
 
 // Notes an inlet that thins the film by more than kInletNoteDeficit (one film; a cycle).
 void NoteContactInlet(const InletTruncation& t, double x_start_b);

@@ -24,6 +24,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/dry_contact.cpp
   src/ehl/inlet_truncation.cpp
   src/ehl/outlet_spike.cpp
+  src/ehl/hertz_edge.cpp
   src/ehl/moving_line_source.cpp
   src/ehl/surface_temperature.cpp
   src/ehl/film_energy.cpp

@@ -108,6 +108,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
     inlet.inlet_viscosity_pa_s = inlet_law.eta_pa_s;
     inlet.pressure_viscosity_per_pa = inlet_law.deta_dp / inlet_law.eta_pa_s;
     rec.inlet = EstimateInletTruncation(state.p_pa, state.h_m, inlet);
+    rec.hertz_edge = EstimateHertzEdge(r, inlet.half_width_m, rec.h_c_m, grid.dx_m());
     // The same quantities as the mesh cycle's /cycle/T_max and /cycle/mu (mesh_cycle_scene.cpp).
     // A failed step's film may touch (h <= 0), where friction is undefined: 0 then, and the
     // step's status column says it failed.

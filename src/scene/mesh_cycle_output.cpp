@@ -115,6 +115,17 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
                    "width of the outlet pressure spike at half its prominence, in grid cells "
                    "(-1: no spike); below 20 the step's p_max is not grid-converged");
   }
+  // The Hertzian edge's width (EstimateHertzEdge; docs/results.md): under kEdgeResolvedCells
+  // the step's film is likely too thin.
+  {
+    std::vector<double> cells;
+    for (const HertzEdge& e : r.HertzEdges()) cells.push_back(e.width_m > 0 ? e.width_cells : -1.0);
+    if (cells.size() == r.steps.size())
+      h5.WriteVector("/cycle/edge_cells", cells, "-",
+                     "width of the film's Hertzian edge b (3 R h_c / (2 sqrt(2) b^2))^(2/3) in "
+                     "grid cells (-1: rigid solids or no film); below 10 h_c is likely too thin "
+                     "by more than 1 %");
+  }
   // What the truncated inlet costs the film (EstimateInletTruncation; docs/results.md).
   if (r.p_pa.size() == r.steps.size() && r.h_m.size() == r.steps.size()) {
     std::vector<double> deficit;

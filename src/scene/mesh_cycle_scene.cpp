@@ -113,6 +113,19 @@ std::vector<OutletSpike> MeshCycleResult::OutletSpikes() const {
   return out;
 }
 
+std::vector<HertzEdge> MeshCycleResult::HertzEdges() const {
+  std::vector<HertzEdge> out;
+  if (x_m.size() < 2) return out;
+  for (const MeshCycleStep& st : steps) {
+    const double b =
+        elastic && st.load_n_per_m > 0
+            ? LineContactHertz(st.load_n_per_m, st.reduced_radius_m, e_prime_pa).half_width_m
+            : 0.0;
+    out.push_back(EstimateHertzEdge(st.reduced_radius_m, b, st.h_c_m, x_m[1] - x_m[0]));
+  }
+  return out;
+}
+
 std::vector<double> MeshCycleStepPositions(double g,
                                            double sb,
                                            double sd,

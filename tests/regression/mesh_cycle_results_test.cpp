@@ -99,6 +99,25 @@ TEST(MeshCycleResults, FileMatchesDocsResultsMd) {
   const std::vector<double> spike = testing::Hdf5Doubles(f, "/cycle/spike_cells");
   ASSERT_EQ(spike.size(), 13u);
   for (double w : spike) EXPECT_TRUE(w == -1.0 || (w > 0.0 && w < 256.0)) << w;
+  // The Hertzian edge of each row from its own h_c, w and R (include/tehl/ehl/hertz_edge.hpp:
+  // delta = b (3 R h_c / (2 sqrt(2) b^2))^(2/3), b = sqrt(8 w R / (pi E')), E' of the seed 004
+  // bronze as below) in cells of the grid's spacing; the seed 004 films resolve it.
+  {
+    const std::vector<double> edge = testing::Hdf5Doubles(f, "/cycle/edge_cells"),
+                              hc = testing::Hdf5Doubles(f, "/cycle/h_c"),
+                              w = testing::Hdf5Doubles(f, "/cycle/w"),
+                              radius = testing::Hdf5Doubles(f, "/cycle/R"),
+                              x = testing::Hdf5Doubles(f, "/profiles/x");
+    ASSERT_EQ(edge.size(), 13u);
+    const double e_prime = 117e9 / (1 - 0.34 * 0.34), pi = 3.14159265358979323846;
+    for (size_t k = 0; k < edge.size(); ++k) {
+      const double b = std::sqrt(8 * w[k] * radius[k] / (pi * e_prime));
+      const double delta =
+          b * std::pow(3 * radius[k] * hc[k] / (2 * std::sqrt(2.0) * b * b), 2.0 / 3.0);
+      EXPECT_NEAR(edge[k], delta / (x[1] - x[0]), 1e-9 * edge[k]) << k;
+      EXPECT_GT(edge[k], 10.0) << k;
+    }
+  }
   // Blok's flash temperature of each row from its own mu, w, u1, u2 and R, with the seed 004
   // bronze of the case (VALIDATION.md section 5: E = 117 GPa, nu = 0.34, rho = 7890 kg/m^3,
   // k = 55 W/(m K), c = 375 J/(kg K)) on both gears: b = sqrt(8 w R / (pi E')) (Hertz) and

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "tehl/ehl/hertz_edge.hpp"
 #include "verification/ehl_moes_point.hpp"
 
 namespace tehl {
@@ -104,6 +105,34 @@ TEST(GridConvergenceVerification, SecondOrderFrom257To4097Nodes) {
   EXPECT_LE(em, 0.01);
 }
 #endif
+
+// The Hertzian-edge estimate of the central film's grid deficit (include/tehl/ehl/
+// hertz_edge.hpp) against the grid-converged films of docs/validation.md: M = 500, L = 2
+// (Richardson H_c 1.1659, section 3.1) on 1025 and 4097 nodes, and M = 20, L = 10 (H_c
+// 4.3450, section 4) on 257 and 513 nodes. The estimate, from the computed film alone, bounds
+// the true deficit and is within a factor of 4 of it.
+TEST(GridConvergenceVerification, HertzEdgeEstimateBoundsTheFilmDeficit) {
+  struct Point {
+    MoesPoint mp;
+    double converged_hc;
+    int n;
+  };
+  for (const Point& pt : {Point{{500, 2}, 1.1659, 1025}, Point{{500, 2}, 1.1659, 4097},
+                          Point{{20, 10}, 4.3450, 257}, Point{{20, 10}, 4.3450, 513}}) {
+    MoesSolver ms(pt.mp, pt.n);
+    FilmState st;
+    const LineContactSolver::Summary sum = ms.solver.SolveSteady(pt.mp.Conditions(), &st);
+    ASSERT_TRUE(sum.usable()) << sum.BriefReport();
+    const HertzEdge e = EstimateHertzEdge(pt.mp.radius_m, pt.mp.Hertz().half_width_m,
+                                          st.CentralFilm(ms.grid), ms.grid.dx_m());
+    const double deficit = 1.0 - ms.Hc(st) / pt.converged_hc;
+    std::printf(
+        "M = %g, L = %g, n = %d: edge %.2f cells, estimated deficit %.3g %%, true %.3g %%\n",
+        pt.mp.M, pt.mp.L, pt.n, e.width_cells, 100 * e.film_deficit, 100 * deficit);
+    EXPECT_LE(deficit, e.film_deficit);
+    EXPECT_GE(deficit, e.film_deficit / 4);
+  }
+}
 
 }  // namespace
 }  // namespace tehl

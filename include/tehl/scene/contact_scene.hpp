@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "tehl/ehl/hertz_edge.hpp"
 #include "tehl/ehl/inlet_truncation.hpp"
 #include "tehl/ehl/line_contact_solver.hpp"
 #include "tehl/ehl/outlet_spike.hpp"
@@ -35,6 +36,8 @@ struct ContactStepRecord {
   double half_width_m = 0;            // Hertz half-width b at this load; 0 for rigid solids [m]
   double wall_time_s = 0;           // wall time of this step's solve (substeps included) [s]
   OutletSpike outlet_spike;         // the outlet pressure spike and its width in cells
+  HertzEdge hertz_edge;             // the film's Hertzian edge and its width in cells (elastic
+                                    //   solids; zero width for rigid ones)
   InletTruncation inlet;            // what the truncated inlet costs the film (estimate)
   LineContactSolver::Summary summary;
   // Non-empty when the time step failed and its film is the steady one at its time

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "tehl/ehl/flash_temperature.hpp"
+#include "tehl/ehl/hertz_edge.hpp"
 #include "tehl/ehl/inlet_truncation.hpp"
 #include "tehl/ehl/line_contact_solver.hpp"
 #include "tehl/ehl/outlet_spike.hpp"
@@ -90,6 +91,8 @@ struct MeshCycleResult {
   int Restarts() const;                         // steps whose film is a steady restart
   // The outlet pressure spike of each step's film (p_pa; FindOutletSpike), one per row.
   std::vector<OutletSpike> OutletSpikes() const;
+  // The Hertzian edge of each step's film (hertz_edge.hpp; zero width for rigid solids).
+  std::vector<HertzEdge> HertzEdges() const;
   // What the truncated inlet costs each step's film (EstimateInletTruncation with the step's
   // own R, um and Hertz half-width), one per row; needs the four fields below.
   std::vector<InletTruncation> InletTruncations() const;

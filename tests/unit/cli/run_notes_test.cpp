@@ -50,6 +50,45 @@ TEST(RunNotes, ARigidFilmGetsNoSpikeNote) {
   EXPECT_EQ(r.out.find("note:"), std::string::npos) << r.out;
 }
 
+// A film whose Hertzian edge the grid does not span (include/tehl/ehl/hertz_edge.hpp): two
+// 40 mm steel discs (E = 210 GPa, nu = 0.3) at 3 MN/m (p_H 3.3 GPa) rolling at 0.05 m/s in
+// SAE 40. Measured with `tehl run` (docs/results.md, "The edge note"): h_c 0.0218 um on 513
+// nodes (edge 0.67 cells), 0.0491 um on 2049 (4.6 cells), 0.05131 um on 32769 nodes.
+std::string HeavySlowDisc(int nodes) {
+  const std::string path = UniqueTempPath("heavy.toml");
+  std::ofstream(path) << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\n"
+                         "youngs_modulus_1_pa = 210e9\npoisson_ratio_1 = 0.3\n"
+                         "youngs_modulus_2_pa = 210e9\npoisson_ratio_2 = 0.3\n"
+                         "speed_1_m_s = 0.05\nspeed_2_m_s = 0.05\nload_n_per_m = 3.0e6\n"
+                         "[lubricant]\nname = \"sae40\"\n[numerics]\ngrid_points = "
+                      << nodes << "\n[output]\ndirectory = \"" << UniqueTempPath("out") << "\"\n";
+  return path;
+}
+
+TEST(RunNotes, AnUnresolvedHertzianEdgeIsNoted) {
+  const RunResult coarse = RunTehl("run -q '" + HeavySlowDisc(513) + "'");
+  ASSERT_TRUE(coarse.exited);
+  ASSERT_EQ(coarse.exit_code, 0) << coarse.out << coarse.err;
+  EXPECT_NE(coarse.out.find("note: the film's Hertzian edge"), std::string::npos) << coarse.out;
+  EXPECT_NE(coarse.out.find("it is not resolved and may be far too thin"), std::string::npos)
+      << coarse.out;
+  // 2049 nodes: 4.2 % below the 32769-node film; the note's bound 1.1 / N^2 is above that.
+  const RunResult fine = RunTehl("run -q '" + HeavySlowDisc(2049) + "'");
+  ASSERT_EQ(fine.exit_code, 0) << fine.out << fine.err;
+  const size_t at = fine.out.find("too thin by up to about ");
+  ASSERT_NE(at, std::string::npos) << fine.out;
+  const double bound = std::stod(fine.out.substr(at + 24));
+  EXPECT_GE(bound, 100 * (1 - 0.0491487 / 0.0513142)) << fine.out;
+  EXPECT_LE(bound, 4 * 100 * (1 - 0.0491487 / 0.0513142)) << fine.out;
+}
+
+TEST(RunNotes, AResolvedHertzianEdgeGetsNoEdgeNote) {
+  const std::string dir = UniqueTempPath("out");
+  const RunResult r = RunTehl("run -q '" + DiscCase(true, dir) + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_EQ(r.out.find("Hertzian edge"), std::string::npos) << r.out;
+}
+
 // The same disc at 4.9 m/s: the default inlet (-4.5 b) cuts off about 1.9 MPa of inlet
 // pressure, about 3 % of the film (tests/verification/inlet_truncation_disc_test.cpp measures
 // 3.0 % at 5 m/s); at -12 b the estimate is (4.5/12)^3 of that, below the note's 0.5 %.

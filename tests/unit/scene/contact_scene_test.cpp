@@ -263,6 +263,7 @@ TEST(ContactScene, IsothermalDiscRecordsTheInletTemperatureAndRollingFriction) {
                                          "t2_max_k",
                                          "dT_flash_blok_k",
                                          "steady_restart",
+                                         "edge_cells",
                                          "termination"};
   EXPECT_EQ(steps.head, head);
   // Isothermal: the surfaces stay at the inlet temperature.
@@ -277,6 +278,8 @@ TEST(ContactScene, IsothermalDiscRecordsTheInletTemperatureAndRollingFriction) {
   EXPECT_EQ(steps.At(0, "coupling_iterations"), s.summary.coupling_iterations);
   EXPECT_NEAR(steps.At(0, "spike_cells"), s.outlet_spike.found ? s.outlet_spike.width_cells : -1.0,
               1e-9);
+  EXPECT_NEAR(steps.At(0, "edge_cells"), s.hertz_edge.width_cells, 1e-9 * s.hertz_edge.width_cells);
+  EXPECT_GT(s.hertz_edge.width_cells, 10.0);  // this light disc resolves its edge
   const Csv profile = ReadCsv(r.profile_csv);
   EXPECT_EQ(profile.head, (std::vector<std::string>{"x_m", "p_pa", "h_m"}));
 }
