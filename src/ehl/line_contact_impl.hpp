@@ -58,6 +58,10 @@ class LineContactSolver::Impl {
 
   Scales ScalesFor(const ContactConditions& c) const;
   double EstimateCentralFilm(const ContactConditions& c) const;
+  // For the message of a failed steady solve: when the grid does not span the Hertzian edge of
+  // the film that Moes' fit estimates (hertz_edge.hpp), says so and how many nodes would;
+  // else empty.
+  std::string EdgeHint(const ContactConditions& c) const;
   // `clock`: the state whose time and travel the guess takes (rough surfaces are sampled at
   // the travel); null = time and travel 0.
   FilmState InitialGuess(const ContactConditions& c, const FilmState* clock = nullptr) const;

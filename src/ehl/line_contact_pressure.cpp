@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <string>
@@ -11,6 +12,8 @@
 
 #include "base/schema.hpp"
 #include "ehl/line_contact_impl.hpp"
+#include "tehl/ehl/hertz_edge.hpp"
+#include "tehl/units.hpp"
 
 namespace tehl {
 namespace {
@@ -315,13 +318,13 @@ LineContactSolver::Summary LineContactSolver::Impl::Solve(const ContactCondition
       sum.termination = Termination::kMaxIterations;
       sum.message = "no convergence directly (" + first_failure +
                     "); continuation in load and pressure-viscosity coefficient reached " +
-                    internal::FormatReal(theta_good) + " of the load in " +
-                    std::to_string(stages) + " stages";
+                    internal::FormatReal(theta_good) + " of the load in " + std::to_string(stages) +
+                    " stages" + EdgeHint(c);
     } else if (!sum.usable()) {
       sum.message = "no convergence directly (" + first_failure +
                     ") nor by continuation in "
                     "load and pressure-viscosity coefficient (" +
-                    stage.message + ")";
+                    stage.message + ")" + EdgeHint(c);
       if (!s->valid()) *s = start;
     }
   }
@@ -332,6 +335,24 @@ LineContactSolver::Summary LineContactSolver::Impl::Solve(const ContactCondition
     sum.load_error = std::abs(grid_.dx_m() * s->p_pa.sum() - c.load_n_per_m) / c.load_n_per_m;
   sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
   return sum;
+}
+
+std::string LineContactSolver::Impl::EdgeHint(const ContactConditions& c) const {
+  if (!eff_.elastic) return "";
+  const double b = LineContactHertz(c.load_n_per_m, c.reduced_radius_m, e_prime_).half_width_m;
+  const HertzEdge e =
+      EstimateHertzEdge(c.reduced_radius_m, b, EstimateCentralFilm(c), grid_.dx_m());
+  if (!(e.width_m > 0) || e.resolved()) return "";
+  // The next 2^k + 1 nodes at which the same span of x has the edge over kEdgeResolvedCells.
+  const double cells = (grid_.size() - 1) * kEdgeResolvedCells / e.width_cells;
+  const double nodes = std::exp2(std::ceil(std::log2(cells))) + 1;
+  char buf[224];
+  std::snprintf(buf, sizeof buf,
+                "; the grid spans the Hertzian edge of the film (estimated from Moes' fit) with "
+                "%.2g cells, where %.0f are needed: about %.0f nodes would span it "
+                "(docs/results.md, \"The edge note\")",
+                e.width_cells, kEdgeResolvedCells, nodes);
+  return buf;
 }
 
 FilmState LineContactSolver::Impl::SequencedGuess(const ContactConditions& c,
