@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/sweep_mpi.hpp"
+#include "tehl/ehl/hertz_edge.hpp"
 #include "tehl/error.hpp"
 #include "tehl/scene/study.hpp"
 #include "tehl/scene/study_index.hpp"
@@ -76,10 +77,11 @@ int RunSweep(const SweepArgs& a) {
   if (mpi.rank() != 0) return kExitOk;
   const std::vector<SceneRow> gathered = SceneRowsFromText(all);
   const auto paths = WriteStudyIndex(study, gathered);
-  int ok = 0, not_converged = 0, failed = 0, resumed = 0, restarted = 0;
+  int ok = 0, not_converged = 0, failed = 0, resumed = 0, restarted = 0, unresolved_edge = 0;
   for (const auto& r : gathered) {
     ok += r.status == "ok";
     restarted += r.steady_restarts > 0;
+    unresolved_edge += r.edge_cells_min >= 0 && r.edge_cells_min < kEdgeResolvedCells;
     not_converged += r.status == "not_converged";
     failed += r.status.rfind("failed", 0) == 0;
     resumed += !r.computed;
@@ -91,6 +93,12 @@ int RunSweep(const SweepArgs& a) {
         "note: %d scene(s) have time steps that did not converge and were replaced by the "
         "steady film at their time (index column steady_restarts; [numerics] failed_step)\n",
         restarted);
+  if (unresolved_edge > 0)
+    std::printf(
+        "note: %d scene(s) have films whose Hertzian edge spans fewer than %.0f grid cells "
+        "(index column edge_cells_min): their h_c is likely more than 1 %% too thin; more "
+        "[numerics] grid_points resolve it (docs/results.md, \"The edge note\")\n",
+        unresolved_edge, kEdgeResolvedCells);
   std::printf("wrote %s and %s\n", paths[0].c_str(), paths[1].c_str());
   return ok == static_cast<int>(gathered.size()) ? kExitOk : kExitNotConverged;
 }

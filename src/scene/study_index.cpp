@@ -115,6 +115,15 @@ double Mean(const std::vector<double>& v) {
   return v.empty() ? 0.0 : s / static_cast<double>(v.size());
 }
 
+// The fewest cells across the Hertzian edge over the films that have one (-1 marks rigid
+// solids or no film: hertz_edge.hpp); -1 when none has.
+double FewestEdgeCells(const std::vector<double>& cells) {
+  double fewest = -1;
+  for (double c : cells)
+    if (c >= 0 && (fewest < 0 || c < fewest)) fewest = c;
+  return fewest;
+}
+
 SceneRow GearRow(const std::string& path) {
   const Hdf5Reader h5(path);
   SceneRow r;
@@ -145,6 +154,8 @@ SceneRow GearRow(const std::string& path) {
   r.wall_time_s = h5.DoubleAttribute("/", "wall_time");
   if (h5.Exists("/solver/steady_restart"))  // files of earlier versions have none
     for (double v : h5.Doubles("/solver/steady_restart")) r.steady_restarts += v;
+  if (h5.Exists("/cycle/edge_cells"))
+    r.edge_cells_min = FewestEdgeCells(h5.Doubles("/cycle/edge_cells"));
   const bool ok = h5.StringAttribute("/", "converged") == "true";
   r.status = ok ? "ok" : "not_converged";
   if (!ok) {
@@ -184,8 +195,8 @@ SceneRow ContactRow(const std::string& path) {
                it = col("termination");
   const size_t itm = find("t_max_k"), imu = find("mu"), iwt = find("wall_time_s"),
                it1 = find("t1_max_k"), it2 = find("t2_max_k"), ifl = find("dT_flash_blok_k"),
-               irs = find("steady_restart");
-  std::vector<double> h_min, h_c, p_max, t_max, mu, surface, flash;
+               irs = find("steady_restart"), ied = find("edge_cells");
+  std::vector<double> h_min, h_c, p_max, t_max, mu, surface, flash, edge;
   SceneRow r;
   r.status = "ok";
   while (std::getline(in, line)) {
@@ -202,6 +213,7 @@ SceneRow ContactRow(const std::string& path) {
       surface.push_back(std::max(std::stod(f[it1]), std::stod(f[it2])));
     if (ifl != none) flash.push_back(std::stod(f[ifl]));
     if (irs != none) r.steady_restarts += std::stod(f[irs]);
+    if (ied != none) edge.push_back(std::stod(f[ied]));
     if (f[it] != "converged") {
       r.status = "not_converged";
       r.message = f[it];
@@ -217,6 +229,7 @@ SceneRow ContactRow(const std::string& path) {
   r.mu_max = Max(mu);
   r.t_surface_max_k = Max(surface);
   r.flash_blok_max_k = Max(flash);
+  r.edge_cells_min = FewestEdgeCells(edge);
   return r;
 }
 
@@ -259,6 +272,10 @@ const std::vector<SummaryColumn>& SummaryColumns() {
        "time steps that did not converge and were replaced by the steady film at their time "
        "([numerics] failed_step; 0 in results of earlier versions)",
        &SceneRow::steady_restarts},
+      {"edge_cells_min", "edge_cells_min", "-",
+       "fewest grid cells across a film's Hertzian edge; below 10 that film is likely more "
+       "than 1 % too thin (-1: rigid solids, or results of earlier versions)",
+       &SceneRow::edge_cells_min},
   };
   return cols;
 }

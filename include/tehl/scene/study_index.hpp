@@ -33,6 +33,9 @@ struct SceneRow {
   double wall_time_s = 0;         // the scene's run time [s]
   double steady_restarts = 0;     // time steps replaced by the steady film at their time
                                   //   ([numerics] failed_step = "steady_restart") [-]
+  double edge_cells_min = -1;     // fewest grid cells across a film's Hertzian edge
+                                  //   (hertz_edge.hpp); -1: rigid solids, or a result of an
+                                  //   earlier version [-]
   int steps = 0;                  // rows of the cycle table [-]
 };
 

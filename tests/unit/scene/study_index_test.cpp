@@ -53,6 +53,7 @@ TEST(StudyIndex, ContactStepsWithoutTheNewColumnsGiveZeros) {
   EXPECT_EQ(r.t_surface_max_k, 0.0);
   EXPECT_EQ(r.flash_blok_max_k, 0.0);
   EXPECT_EQ(r.steady_restarts, 0.0);
+  EXPECT_EQ(r.edge_cells_min, -1.0);  // no edge_cells column
 }
 
 // The surface and flash temperature columns (docs/results.md): the hottest surface of either
@@ -99,6 +100,25 @@ TEST(StudyIndex, ContactStepsCountTheirSteadyRestarts) {
   EXPECT_EQ(back[0].steady_restarts, 2.0);
 }
 
+// The edge_cells column (docs/results.md, "The edge note"): the index keeps the fewest cells
+// over the films that have an edge (-1 marks none); a file without the column gives -1 (the
+// first test above).
+TEST(StudyIndex, ContactStepsKeepTheFewestEdgeCells) {
+  StudyScene scene;
+  const Study s = OneSceneStudy(
+      "edge_steps",
+      "t_s,w_n_per_m,u1_m_s,u2_m_s,h_min_m,h_c_m,p_max_pa,steady_restart,edge_cells,termination\n"
+      "0.0,1e5,1.2,0.8,3.0e-7,4.0e-7,6.0e8,0,25.5,converged\n"
+      "1e-4,1e5,1.2,0.8,2.9e-7,3.9e-7,6.1e8,0,7.25,converged\n"
+      "2e-4,1e5,1.2,0.8,2.9e-7,3.9e-7,6.1e8,0,-1,converged\n",
+      &scene);
+  const SceneRow r = ReadSceneRow(s, scene);
+  EXPECT_EQ(r.edge_cells_min, 7.25);
+  const std::vector<SceneRow> back = SceneRowsFromText(SceneRowsToText({r}));
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(back[0].edge_cells_min, 7.25);
+}
+
 // The new columns: T_max the largest, mu mean and max, wall time the sum over the steps.
 // Expected values by hand from the three rows: max(320, 335, 330) = 335 K;
 // mu (0.01 + 0.04 + 0.03)/3 = 0.08/3, max 0.04; wall 0.5 + 0.25 + 0.125 = 0.875 s (exact in
@@ -129,6 +149,35 @@ size_t Column(const std::vector<std::string>& head, const std::string& name) {
   const auto it = std::find(head.begin(), head.end(), name);
   EXPECT_NE(it, head.end()) << "no column " << name;
   return static_cast<size_t>(it - head.begin());
+}
+
+// A heavy slow disc (3 MN/m, p_H 3.3 GPa, 0.05 m/s; docs/results.md, "The edge note") on 513
+// and 8193 nodes: the index keeps each scene's fewest cells across the Hertzian edge (0.67
+// and about 18 measured with `tehl run`), and the sweep notes the one scene under 10.
+TEST(StudyIndex, ASweepNotesScenesWhoseHertzianEdgeIsNotResolved) {
+  const std::string dir = testing::UniqueTempPath("edge_study");
+  fs::create_directories(dir);
+  std::ofstream(dir + "/heavy.toml")
+      << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nyoungs_modulus_1_pa = 210e9\n"
+         "poisson_ratio_1 = 0.3\nyoungs_modulus_2_pa = 210e9\npoisson_ratio_2 = 0.3\n"
+         "speed_1_m_s = 0.05\nspeed_2_m_s = 0.05\nload_n_per_m = 3.0e6\n[lubricant]\n"
+         "name = \"sae40\"\n";
+  std::ofstream(dir + "/study.toml") << "[study]\nbase = \"heavy.toml\"\n[[vary]]\n"
+                                        "key = \"numerics.grid_points\"\nvalues = [513, 8193]\n";
+  const std::string out = dir + "/out";
+  const testing::RunResult r =
+      testing::RunTehl("sweep -j 2 -q -o '" + out + "' '" + dir + "/study.toml'");
+  ASSERT_TRUE(r.exited) << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("note: 1 scene(s) have films whose Hertzian edge spans fewer than 10"),
+            std::string::npos)
+      << r.out;
+  const auto cells = ReadCsvCells(out + "/index.csv");
+  ASSERT_EQ(cells.size(), 3u);
+  const size_t ie = Column(cells[0], "edge_cells_min");
+  EXPECT_NEAR(std::stod(cells[1][ie]), 0.67, 0.01);
+  EXPECT_GT(std::stod(cells[2][ie]), 10.0);
+  fs::remove_all(dir);
 }
 
 // A thermal pure-rolling disc (cases/disc_steady.toml at 129 nodes, T0 = 313.15 K given) at two
