@@ -151,22 +151,31 @@ size_t Column(const std::vector<std::string>& head, const std::string& name) {
   return static_cast<size_t>(it - head.begin());
 }
 
+// `tehl sweep -j 2` of a one-key study over the base case `base_toml` (written to dir/base.toml)
+// into dir/out; the study's key and its values (a TOML array).
+testing::RunResult Sweep(const std::string& dir,
+                         const std::string& base_toml,
+                         const std::string& key,
+                         const std::string& values) {
+  fs::create_directories(dir);
+  std::ofstream(dir + "/base.toml") << base_toml;
+  std::ofstream(dir + "/study.toml") << "[study]\nbase = \"base.toml\"\n[[vary]]\nkey = \"" << key
+                                     << "\"\nvalues = " << values << "\n";
+  return testing::RunTehl("sweep -j 2 -q -o '" + dir + "/out' '" + dir + "/study.toml'");
+}
+
 // A heavy slow disc (3 MN/m, p_H 3.3 GPa, 0.05 m/s; docs/results.md, "The edge note") on 513
 // and 8193 nodes: the index keeps each scene's fewest cells across the Hertzian edge (0.67
 // and about 18 measured with `tehl run`), and the sweep notes the one scene under 10.
 TEST(StudyIndex, ASweepNotesScenesWhoseHertzianEdgeIsNotResolved) {
-  const std::string dir = testing::UniqueTempPath("edge_study");
-  fs::create_directories(dir);
-  std::ofstream(dir + "/heavy.toml")
-      << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nyoungs_modulus_1_pa = 210e9\n"
-         "poisson_ratio_1 = 0.3\nyoungs_modulus_2_pa = 210e9\npoisson_ratio_2 = 0.3\n"
-         "speed_1_m_s = 0.05\nspeed_2_m_s = 0.05\nload_n_per_m = 3.0e6\n[lubricant]\n"
-         "name = \"sae40\"\n";
-  std::ofstream(dir + "/study.toml") << "[study]\nbase = \"heavy.toml\"\n[[vary]]\n"
-                                        "key = \"numerics.grid_points\"\nvalues = [513, 8193]\n";
-  const std::string out = dir + "/out";
+  const std::string dir = testing::UniqueTempPath("edge_study"), out = dir + "/out";
   const testing::RunResult r =
-      testing::RunTehl("sweep -j 2 -q -o '" + out + "' '" + dir + "/study.toml'");
+      Sweep(dir,
+            "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nyoungs_modulus_1_pa = 210e9\n"
+            "poisson_ratio_1 = 0.3\nyoungs_modulus_2_pa = 210e9\npoisson_ratio_2 = 0.3\n"
+            "speed_1_m_s = 0.05\nspeed_2_m_s = 0.05\nload_n_per_m = 3.0e6\n[lubricant]\n"
+            "name = \"sae40\"\n",
+            "numerics.grid_points", "[513, 8193]");
   ASSERT_TRUE(r.exited) << r.err;
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("note: 1 scene(s) have films whose Hertzian edge spans fewer than 10"),
@@ -186,18 +195,14 @@ TEST(StudyIndex, ASweepNotesScenesWhoseHertzianEdgeIsNotResolved) {
 // to the fresh row (the fresh row is read from the same file, wall time included: the sum of the
 // steps' wall_time_s) except `computed`, 1 then 0.
 TEST(StudyIndex, DiscSweepIndexCarriesTemperatureFrictionAndWallTime) {
-  const std::string dir = testing::UniqueTempPath("disc_study");
-  fs::create_directories(dir);
-  std::ofstream(dir + "/disc.toml")
-      << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nspeed_1_m_s = 1.0\n"
-         "speed_2_m_s = 1.0\nload_n_per_m = 1.0e5\n[lubricant]\nname = \"sae40\"\n"
-         "inlet_temperature_k = 313.15\n[effects]\ntransient = false\nthermal = true\n"
-         "[numerics]\ngrid_points = 129\n";
-  std::ofstream(dir + "/study.toml") << "[study]\nbase = \"disc.toml\"\n[[vary]]\n"
-                                        "key = \"contact.load_n_per_m\"\nvalues = [5e4, 1e5]\n";
-  const std::string out = dir + "/out";
+  const std::string dir = testing::UniqueTempPath("disc_study"), out = dir + "/out";
   const testing::RunResult r =
-      testing::RunTehl("sweep -j 2 -q -o '" + out + "' '" + dir + "/study.toml'");
+      Sweep(dir,
+            "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nspeed_1_m_s = 1.0\n"
+            "speed_2_m_s = 1.0\nload_n_per_m = 1.0e5\n[lubricant]\nname = \"sae40\"\n"
+            "inlet_temperature_k = 313.15\n[effects]\ntransient = false\nthermal = true\n"
+            "[numerics]\ngrid_points = 129\n",
+            "contact.load_n_per_m", "[5e4, 1e5]");
   ASSERT_TRUE(r.exited) << r.err;
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   const auto first = ReadCsvCells(out + "/index.csv");
