@@ -41,8 +41,9 @@ int RunGear(const RunArgs& a) {
   // A cycle reports only its converged steps (not the failed one where it stopped, nor failed
   // steps it left behind: failed_step = "steady_restart_or_skip").
   const size_t ok = UsableSteps(r);
-  std::printf("mesh cycle A..E: %zu of %d steps (%s), grid %zu nodes, %.1f s\n", r.steps.size() - 1,
-              r.planned_steps, r.step_rule.c_str(), r.x_m.size(), r.wall_time_s);
+  std::printf("mesh cycle A..E: %zu of %d steps (%s), grid %zu nodes (%s), %.1f s\n",
+              r.steps.size() - 1, r.planned_steps, r.step_rule.c_str(), r.x_m.size(),
+              r.grid_rule.c_str(), r.wall_time_s);
   if (r.begin_m > 0 || r.end_m < r.length_m)
     std::printf(
         "tip relief: the tracked pair carries under 1 %% of F_bt before s = %.4g mm and "
@@ -98,6 +99,7 @@ int RunContact(const RunArgs& a) {
   o.output_dir = a.output_dir;
   const ContactRunResult r = RunContactCase(a.case_path, o);
   const auto& last = r.steps.back();
+  std::printf("grid %d nodes (%s)\n", r.grid_points, r.grid_rule.c_str());
   std::printf("h_min = %.6g m, h_c = %.6g m, p_max = %.6g Pa\n", last.h_min_m, last.h_c_m,
               last.p_max_pa);
   if (last.summary.usable() && last.flash_rise_blok_k > 0) {  // sliding, elastic

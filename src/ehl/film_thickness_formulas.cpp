@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "tehl/units.hpp"
+
 namespace tehl {
 
 double MoesCentralFilm(double M, double L) {
@@ -32,6 +34,13 @@ double PanHamrockMinimumFilmM(double U, double G, double W, double r) {
 
 double MartinRigidFilmM(double eta0, double um, double r, double w) {
   return 4.896 * eta0 * um * r / w;
+}
+
+double EstimatedCentralFilmM(
+    double eta0, double alpha, double um, double w, double r, double e_prime, bool elastic) {
+  if (!elastic && alpha == 0.0) return MartinRigidFilmM(eta0, um, r, w);
+  const DimensionlessGroups g = LineContactGroups(eta0, alpha, um, w, r, e_prime);
+  return MoesCentralFilmM(g.U, g.G, g.W, r);
 }
 
 }  // namespace tehl

@@ -1,5 +1,6 @@
 #include "tehl/ehl/hertz_edge.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tehl {
@@ -17,6 +18,14 @@ HertzEdge EstimateHertzEdge(double reduced_radius_m,
   e.width_cells = e.width_m / dx_m;
   e.film_deficit = kEdgeDeficitConstant / (e.width_cells * e.width_cells);
   return e;
+}
+
+int NodesSpanningEdge(double span_m, double edge_width_m, int min_nodes, int max_nodes) {
+  if (!(span_m > 0 && edge_width_m > 0)) return min_nodes;
+  const double cells = kEdgeResolvedCells * span_m / edge_width_m;
+  int n = 3;
+  while (n < max_nodes && (n < min_nodes || n - 1 < cells)) n = 2 * n - 1;
+  return std::min(std::max(n, min_nodes), max_nodes);
 }
 
 double HertzGap(double reduced_radius_m, double half_width_m, double xi) {

@@ -343,13 +343,12 @@ std::string LineContactSolver::Impl::EdgeHint(const ContactConditions& c) const 
   const HertzEdge e =
       EstimateHertzEdge(c.reduced_radius_m, b, EstimateCentralFilm(c), grid_.dx_m());
   if (!(e.width_m > 0) || e.resolved()) return "";
-  // The next 2^k + 1 nodes at which the same span of x has the edge over kEdgeResolvedCells.
-  const double cells = (grid_.size() - 1) * kEdgeResolvedCells / e.width_cells;
-  const double nodes = std::exp2(std::ceil(std::log2(cells))) + 1;
+  const int nodes =
+      NodesSpanningEdge(grid_.x_end_m() - grid_.x_start_m(), e.width_m, grid_.size(), 1 << 24);
   char buf[224];
   std::snprintf(buf, sizeof buf,
                 "; the grid spans the Hertzian edge of the film (estimated from Moes' fit) with "
-                "%.2g cells, where %.0f are needed: about %.0f nodes would span it "
+                "%.2g cells, where %.0f are needed: about %d nodes would span it "
                 "(docs/results.md, \"The edge note\")",
                 e.width_cells, kEdgeResolvedCells, nodes);
   return buf;

@@ -255,12 +255,9 @@ LineContactSolver::Impl::Scales LineContactSolver::Impl::ScalesFor(
 
 double LineContactSolver::Impl::EstimateCentralFilm(const ContactConditions& c) const {
   const double eta0 = lub_.viscosity().Evaluate(0.0, c.temperature_k).eta_pa_s;
-  if (!eff_.elastic && !eff_.piezoviscous)
-    return MartinRigidFilmM(eta0, c.um(), c.reduced_radius_m, c.load_n_per_m);
   const double alpha = eff_.piezoviscous ? lub_.viscosity().PressureViscosityCoefficient() : 0.0;
-  const DimensionlessGroups g =
-      LineContactGroups(eta0, alpha, c.um(), c.load_n_per_m, c.reduced_radius_m, e_prime_);
-  return MoesCentralFilmM(g.U, g.G, g.W, c.reduced_radius_m);
+  return EstimatedCentralFilmM(eta0, alpha, c.um(), c.load_n_per_m, c.reduced_radius_m, e_prime_,
+                               eff_.elastic);
 }
 
 FilmState LineContactSolver::Impl::InitialGuess(const ContactConditions& c,

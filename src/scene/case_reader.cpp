@@ -137,9 +137,15 @@ Document ReadCaseDocument(const std::string& path) {
       doc.Problem("lubricant", "name", "no such lubricant file",
                   "sae40, sae90, reference_z068, or a path to a lubricant .toml file");
   }
-  if (doc.Has("numerics", "grid_points") && doc.Int("numerics", "grid_points") % 2 == 0)
-    doc.Problem("numerics", "grid_points", "must be odd, so a node sits at x = 0",
-                "an odd integer >= 17, e.g. 257, 513, 1025");
+  if (doc.Has("numerics", "grid_points")) {
+    const long long n = doc.Int("numerics", "grid_points");
+    if (n > 0 && n < 17)
+      doc.Problem("numerics", "grid_points", "too few nodes for a film",
+                  "0 (automatic) or an odd integer >= 17, e.g. 257, 513, 1025");
+    else if (n > 0 && n % 2 == 0)
+      doc.Problem("numerics", "grid_points", "must be odd, so a node sits at x = 0",
+                  "0 (automatic) or an odd integer >= 17, e.g. 257, 513, 1025");
+  }
   return doc;
 }
 

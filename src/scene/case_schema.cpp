@@ -146,7 +146,10 @@ SectionSpec NumericsSection() {
       "grid, time stepping and solver settings",
       false,
       {
-          Integer("grid_points", "-", "513", "nodes across the contact", 17.0, 1e6),
+          Integer("grid_points", "-", "0",
+                  "nodes across the contact; 0 = automatic: from 513 up to what the narrowest "
+                  "Hertzian edge of the run needs (docs/case_format.md)",
+                  0.0, 1e6),
           Real("x_start_b", "-", "-4.5", "inlet end of the grid in Hertz half-widths b", -100.0,
                -1.0),
           Real("x_end_b", "-", "1.5", "outlet end of the grid in Hertz half-widths b", 1.0, 50.0),

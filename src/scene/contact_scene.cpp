@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "io/atomic_file.hpp"
+#include "scene/automatic_grid.hpp"
 #include "scene/case_reader.hpp"
 #include "scene/contact_case.hpp"
 #include "scene/contact_csv.hpp"
@@ -60,14 +61,19 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   const double r = in.ReducedRadius();
   // The grid's units: the largest Hertz half-width over the tables (elastic solids) or the
   // longest rigid inlet scale (internal::GridUnitsFor).
+  // Its node count: the case's, or one that spans every film's Hertzian edge
+  // (internal::GridChoice), over the table rows.
   internal::GridUnits units;
-  for (size_t i = 0; i < in.w.size(); ++i) {
-    const double b = LineContactHertz(in.w[i], r, in.e_prime).half_width_m;
+  internal::GridChoice choice(film, in.e_prime);
+  for (size_t i = 0; i < std::max({in.w.size(), in.u1.size(), in.u2.size()}); ++i) {
+    const double w = in.w[std::min(i, in.w.size() - 1)];
+    const double b = LineContactHertz(w, r, in.e_prime).half_width_m;
     const double um = 0.5 * (in.u1[std::min(i, in.u1.size() - 1)] +
                              in.u2[std::min(i, in.u2.size() - 1)]);
-    units = units.Max(internal::GridUnitsFor(film, b, r, um, in.w[i]));
+    units = units.Max(internal::GridUnitsFor(film, b, r, um, w));
+    choice.Add(r, um, w);
   }
-  const UniformGrid grid = units.Grid(film);
+  const UniformGrid grid = choice.Grid(units);
   LineContactSolver solver(grid, in.e_prime, *film.lubricant, film.effects, film.options,
                            film.surface1, film.surface2, film.solids);
   auto conditions = [&](double t) {
@@ -76,6 +82,8 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   };
   ContactRunResult result;
   result.x_start_b = film.x_start_b;
+  result.grid_points = grid.size();
+  result.grid_rule = choice.Rule(units);
   result.inlet_temperature_k = film.inlet_temperature_k;
   result.finite_peclet = film.effects.finite_peclet;
   result.thermal = film.effects.thermal;

@@ -21,7 +21,7 @@ struct FilmCase {
   double inlet_temperature_k = 0;                 // T0 of the run [K]
   FilmEffects effects;
   LineContactSolver::Options options;
-  int grid_points = 513;                          // [-]
+  int grid_points = 0;                            // [-] 0 = automatic (automatic_grid.hpp)
   double x_start_b = -4.5, x_end_b = 1.5;         // grid ends in GridUnits lengths [-]
   std::shared_ptr<const SurfaceShape> surface1, surface2;  // null = smooth
   ContactSolids solids;                           // thermal properties of the two bodies
@@ -48,9 +48,6 @@ struct GridUnits {
   double inlet_m = 0, outlet_m = 0;
   GridUnits Max(const GridUnits& o) const {
     return {std::max(inlet_m, o.inlet_m), std::max(outlet_m, o.outlet_m)};
-  }
-  UniformGrid Grid(const FilmCase& film) const {
-    return UniformGrid(film.x_start_b * inlet_m, film.x_end_b * outlet_m, film.grid_points);
   }
 };
 inline constexpr double kRigidInletUnit = 40.0 / 4.5;   // inlet unit / l [-]

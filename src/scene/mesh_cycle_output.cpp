@@ -91,6 +91,7 @@ std::unique_ptr<Hdf5Writer> BeginMeshCycleHdf5(const std::string& path,
 void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles) {
   h5.SetAttribute("/", "converged", r.converged() ? "true" : "false");
   h5.SetAttribute("/", "step_rule", r.step_rule);
+  h5.SetAttribute("/", "grid_rule", r.grid_rule);
   h5.SetAttribute("/", "wall_time", r.wall_time_s, "s");
   h5.SetAttribute("/", "resumed_from_step", static_cast<double>(r.resumed_from_step), "-");
   h5.SetAttribute("/", "steady_restarts", static_cast<double>(r.Restarts()), "-");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "scene/automatic_grid.hpp"
 #include "scene/dynamic_load.hpp"
 #include "tehl/gear/load_sharing.hpp"
 #include "tehl/gear/operating_point.hpp"
@@ -67,6 +68,7 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
   const int samples = 400;
   double transits = 0;
   GridUnits units;  // b_max, or the longest rigid inlet scale (GridUnitsFor)
+  GridChoice choice(film, e_prime_pa);  // the node count (automatic_grid.hpp)
   for (int i = 0; i <= samples; ++i) {
     const double s = begin + (end - begin) * i / samples;
     for (bool left : {true, false}) {
@@ -76,11 +78,13 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
       plan.max_half_width_m = std::max(plan.max_half_width_m, b);
       units = units.Max(GridUnitsFor(film, b, st.contact.reduced_radius_m, st.contact.um_m_s,
                                      st.load_n_per_m));
+      choice.Add(st.contact.reduced_radius_m, st.contact.um_m_s, st.load_n_per_m);
       if (left && i > 0)
         transits += st.contact.um_m_s / b * (path.duration_s() * (end - begin) / g / samples);
     }
   }
-  plan.grid = units.Grid(film);
+  plan.grid = choice.Grid(units);
+  plan.grid_rule = choice.Rule(units);
   const UniformGrid& grid = plan.grid;
 
   // Step count: the user's, or automatic; with roughness at least dt <= dx/um per segment.

@@ -203,6 +203,7 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   const std::vector<double>& s_steps = plan.s_steps;
   r.planned_steps = static_cast<int>(s_steps.size()) - 1;
   r.step_rule = plan.step_rule;
+  r.grid_rule = plan.grid_rule;
 
   // The result file is open (under its temporary name) for the whole run.
   std::unique_ptr<Hdf5Writer> h5;

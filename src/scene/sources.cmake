@@ -3,6 +3,7 @@ list(APPEND TEHL_SOURCES
   src/scene/case_schema.cpp
   src/scene/case_reader.cpp
   src/scene/film_case.cpp
+  src/scene/automatic_grid.cpp
   src/scene/contact_case.cpp
   src/scene/contact_scene.cpp
   src/scene/contact_csv.cpp

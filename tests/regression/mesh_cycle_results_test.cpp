@@ -141,6 +141,7 @@ TEST(MeshCycleResults, FileMatchesDocsResultsMd) {
     EXPECT_GT(flash.front(), 1.0);  // A: sliding at SRR -0.72
   }
   EXPECT_EQ(testing::Hdf5StringAttribute(f, "/", "converged"), "true");
+  EXPECT_EQ(testing::Hdf5StringAttribute(f, "/", "grid_rule"), "[numerics] grid_points = 257");
   // /case is the case as run: the reduced keys and the defaults filled in.
   const std::string case_text = testing::Hdf5Text(f, "/case");
   EXPECT_NE(case_text.find("grid_points = 257"), std::string::npos) << case_text;

@@ -93,6 +93,21 @@ TEST(FilmThicknessFormulas, PanHamrockIsThePublishedPowerLaw) {
   EXPECT_NEAR(PanHamrockMinimumFilmM(u, g, 2 * w, r) / hm, std::pow(2.0, -0.128), 1e-12);
 }
 
+TEST(FilmThicknessFormulas, TheEstimateIsMartinsForARigidIsoviscousFilmAndMoesOtherwise) {
+  // The seed 004 pitch point of the test above (SAE 40): Moes 0.88 um (VALIDATION.md section
+  // 5); rigid and isoviscous, Martin's h0 = 4.896 eta0 um R / w (VALIDATION.md section 2).
+  const double e_prime = 117e9 / (1.0 - 0.34 * 0.34);
+  const double r = 8.978e-3, um = 1.254, w = 116.14e3, eta0 = 0.1140574;
+  const double alpha = 0.62 * (std::log(eta0) + 9.67) / 1.96e8;
+  EXPECT_NEAR(EstimatedCentralFilmM(eta0, alpha, um, w, r, e_prime, true) * 1e6, 0.88, 0.005);
+  EXPECT_NEAR(EstimatedCentralFilmM(eta0, 0.0, um, w, r, e_prime, false), 4.896 * eta0 * um * r / w,
+              1e-15);
+  // A rigid piezoviscous film has no closed form here: Moes' groups with the solids' E'.
+  const DimensionlessGroups g = LineContactGroups(eta0, alpha, um, w, r, e_prime);
+  EXPECT_DOUBLE_EQ(EstimatedCentralFilmM(eta0, alpha, um, w, r, e_prime, false),
+                   MoesCentralFilmM(g.U, g.G, g.W, r));
+}
+
 // Table points with p_H <= 2 GPa solved at the default grid n = 513.
 class FilmThicknessVerification : public ::testing::TestWithParam<std::pair<double, double>> {};
 

@@ -17,4 +17,15 @@ double PanHamrockMinimumFilmM(double U, double G, double W, double reduced_radiu
 double MartinRigidFilmM(double eta0_pa_s, double um_m_s, double reduced_radius_m,
                         double load_n_per_m);
 
+// The central film a solve starts from, before anything is solved [m]: Martin's for a rigid
+// isoviscous film (elastic = false, alpha = 0), otherwise Moes' with the inlet viscosity eta0
+// and the pressure-viscosity coefficient alpha (0 for an isoviscous film).
+double EstimatedCentralFilmM(double eta0_pa_s,
+                             double alpha_per_pa,
+                             double um_m_s,
+                             double load_n_per_m,
+                             double reduced_radius_m,
+                             double e_prime_pa,
+                             bool elastic);
+
 }  // namespace tehl

@@ -39,6 +39,11 @@ HertzEdge EstimateHertzEdge(double reduced_radius_m,
                             double central_film_m,
                             double dx_m);
 
+// The fewest nodes n = 2^k + 1 >= min_nodes at which a uniform grid over span_m puts at least
+// kEdgeResolvedCells cells across an edge of width edge_width_m (capped at max_nodes; min_nodes
+// when the width is not positive) [-].
+int NodesSpanningEdge(double span_m, double edge_width_m, int min_nodes, int max_nodes);
+
 // The dry gap of a Hertzian line contact at x = xi b, |xi| >= 1 (Johnson's formula above;
 // 0 inside the contact) [m].
 double HertzGap(double reduced_radius_m, double half_width_m, double xi);

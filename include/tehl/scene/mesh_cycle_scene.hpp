@@ -82,6 +82,7 @@ struct MeshCycleResult {
   double max_half_width_m = 0;                  // b_max, sets the grid [m]
   int planned_steps = 0;                        // steps from A to E [-]
   std::string step_rule;                        // how the step count was chosen
+  std::string grid_rule;                        // how the node count was chosen
   double wall_time_s = 0;                       // whole run [s]
   std::string hdf5_path, csv_path;              // written files ("" when not written)
   int resumed_from_step = 0;                    // first step solved by this run when resumed

@@ -71,5 +71,18 @@ TEST(HertzEdge, NoEdgeWithoutAFilmOrAContact) {
   EXPECT_FALSE(EstimateHertzEdge(0.01, 1e-4, -1e-6, 1e-6).resolved());
 }
 
+// The grid that spans an edge: (n - 1) delta / span >= kEdgeResolvedCells, n = 2^k + 1.
+TEST(HertzEdge, NodesSpanningAnEdgeAreTheFewestPowerOfTwoPlusOne) {
+  // span / delta = 60: 600 cells are needed, 1024 is the first power of two above.
+  EXPECT_EQ(NodesSpanningEdge(6e-3, 1e-4, 17, 1 << 20), 1025);
+  EXPECT_EQ(NodesSpanningEdge(6e-3, 1e-4, 2049, 1 << 20), 2049);  // never below the minimum
+  EXPECT_EQ(NodesSpanningEdge(6e-3, 1e-4, 17, 513), 513);         // nor above the cap
+  // Exactly 10 cells at 513 nodes: 512 delta / span = 10 with span = 512.
+  EXPECT_EQ(NodesSpanningEdge(512.0, kEdgeResolvedCells, 17, 1 << 20), 513);
+  EXPECT_EQ(NodesSpanningEdge(512.0, 0.99 * kEdgeResolvedCells, 17, 1 << 20), 1025);
+  // No edge (a rigid film, a zero width): the minimum.
+  EXPECT_EQ(NodesSpanningEdge(6e-3, 0.0, 257, 1 << 20), 257);
+}
+
 }  // namespace
 }  // namespace tehl

@@ -132,7 +132,8 @@ TEST(StudyExpansion, UnknownCaseKeyIsReportedAtItsStudyLine) {
 }
 
 TEST(StudyExpansion, InvalidSceneIsReportedAtTheLineOfItsVaryEntry) {
-  // Lines: 4 [[vary]], 5 key, 6 values. grid_points = 9 breaks the case rule >= 17.
+  // Lines: 4 [[vary]], 5 key, 6 values. grid_points = 9 breaks the case rule: 0 (automatic) or
+  // >= 17.
   const std::string path = WriteStudy(
       "bad_scene.toml", "[[vary]]\nkey = \"numerics.grid_points\"\nvalues = [129, 9]\n");
   const InputProblem p = FirstProblem(path);
