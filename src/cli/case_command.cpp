@@ -2,6 +2,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "scene/case_reader.hpp"
@@ -31,18 +32,29 @@ Command AddCaseCommand(CLI::App& app) {
             for (const auto& path : args->check) {
               // The same readers as a run: schema, cross-key rules, gear geometry, film inputs.
               internal::Document doc = internal::ReadCaseDocument(path);
+              std::string plan_text;  // what a run would do: steps and grid
               if (doc.problems().empty()) {
                 std::optional<internal::GearCase> gear;
                 if (doc.HasSection("gear")) gear = internal::ReadGearCase(doc);
                 const internal::FilmCase film = internal::ReadFilmCase(doc);
                 if (doc.problems().empty() && gear && gear->pair) {  // the run's plan
                   const internal::CyclePath cycle(*gear);
-                  internal::PlanMeshCycle(doc, cycle, gear->ReducedModulusPa(), film);
+                  const internal::MeshCyclePlan plan =
+                      internal::PlanMeshCycle(doc, cycle, gear->ReducedModulusPa(), film);
+                  plan_text = "mesh cycle of " + std::to_string(plan.s_steps.size() - 1) +
+                              " steps (" + plan.step_rule + ") on " +
+                              std::to_string(plan.grid.size()) + " nodes (" + plan.grid_rule + ")";
                 } else if (doc.problems().empty() && doc.HasSection("contact")) {
-                  internal::ReadContact(doc);
+                  const internal::ContactInputs in = internal::ReadContact(doc);
+                  if (doc.problems().empty()) {
+                    const internal::ContactGridPlan plan = internal::PlanContactGrid(in, film);
+                    plan_text = "line contact on " + std::to_string(plan.grid.size()) + " nodes (" +
+                                plan.rule + ")";
+                  }
                 }
               }
-              if (doc.problems().empty()) std::cout << path << ": ok\n";
+              if (doc.problems().empty())
+                std::cout << path << ": ok" << (plan_text.empty() ? "" : ": " + plan_text) << "\n";
               all.Append(doc.problems());
             }
             all.ThrowIfAny();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "scene/automatic_grid.hpp"
 #include "tehl/units.hpp"
 
 namespace tehl::internal {
@@ -63,6 +64,21 @@ ContactInputs ReadContact(Document& doc) {
       break;
     }
   return in;
+}
+
+ContactGridPlan PlanContactGrid(const ContactInputs& in, const FilmCase& film) {
+  const double r = in.ReducedRadius();
+  GridUnits units;
+  GridChoice choice(film, in.e_prime);
+  for (size_t i = 0; i < std::max({in.w.size(), in.u1.size(), in.u2.size()}); ++i) {
+    const double w = in.w[std::min(i, in.w.size() - 1)];
+    const double b = LineContactHertz(w, r, in.e_prime).half_width_m;
+    const double um =
+        0.5 * (in.u1[std::min(i, in.u1.size() - 1)] + in.u2[std::min(i, in.u2.size() - 1)]);
+    units = units.Max(GridUnitsFor(film, b, r, um, w));
+    choice.Add(r, um, w);
+  }
+  return {choice.Grid(units), choice.Rule(units)};
 }
 
 }  // namespace tehl::internal

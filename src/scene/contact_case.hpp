@@ -2,9 +2,12 @@
 // E', and the load and speed tables, read and checked (exit 2 on a problem, docs/case_format.md).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "base/schema.hpp"
+#include "scene/film_case.hpp"
+#include "tehl/ehl/grid.hpp"
 
 namespace tehl::internal {
 
@@ -19,5 +22,14 @@ struct ContactInputs {
 // Reads [contact]; speeds that do not entrain, loads <= 0 and loads beyond Hertz line-contact
 // theory (b > 0.2 R) are reported to `doc`.
 ContactInputs ReadContact(Document& doc);
+
+// The film grid of a [contact] run: x in units of the largest Hertz half-width over the tables
+// (elastic solids) or the longest rigid inlet scale (GridUnitsFor), with the case's node count
+// or one that spans every table row's Hertzian edge (automatic_grid.hpp).
+struct ContactGridPlan {
+  UniformGrid grid;
+  std::string rule;  // how the node count was chosen
+};
+ContactGridPlan PlanContactGrid(const ContactInputs& in, const FilmCase& film);
 
 }  // namespace tehl::internal

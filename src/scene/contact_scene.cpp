@@ -59,21 +59,10 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   doc.ThrowIfProblems();
 
   const double r = in.ReducedRadius();
-  // The grid's units: the largest Hertz half-width over the tables (elastic solids) or the
-  // longest rigid inlet scale (internal::GridUnitsFor).
-  // Its node count: the case's, or one that spans every film's Hertzian edge
-  // (internal::GridChoice), over the table rows.
-  internal::GridUnits units;
-  internal::GridChoice choice(film, in.e_prime);
-  for (size_t i = 0; i < std::max({in.w.size(), in.u1.size(), in.u2.size()}); ++i) {
-    const double w = in.w[std::min(i, in.w.size() - 1)];
-    const double b = LineContactHertz(w, r, in.e_prime).half_width_m;
-    const double um = 0.5 * (in.u1[std::min(i, in.u1.size() - 1)] +
-                             in.u2[std::min(i, in.u2.size() - 1)]);
-    units = units.Max(internal::GridUnitsFor(film, b, r, um, w));
-    choice.Add(r, um, w);
-  }
-  const UniformGrid grid = choice.Grid(units);
+  const internal::ContactGridPlan plan = internal::PlanContactGrid(in, film);
+  const UniformGrid& grid = plan.grid;
+  if (!ro.quiet && film.grid_points == 0 && grid.size() > internal::kAutomaticGridMinNodes)
+    std::fprintf(stderr, "grid %d nodes (%s)\n", grid.size(), plan.rule.c_str());
   LineContactSolver solver(grid, in.e_prime, *film.lubricant, film.effects, film.options,
                            film.surface1, film.surface2, film.solids);
   auto conditions = [&](double t) {
@@ -83,7 +72,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   ContactRunResult result;
   result.x_start_b = film.x_start_b;
   result.grid_points = grid.size();
-  result.grid_rule = choice.Rule(units);
+  result.grid_rule = plan.rule;
   result.inlet_temperature_k = film.inlet_temperature_k;
   result.finite_peclet = film.effects.finite_peclet;
   result.thermal = film.effects.thermal;

@@ -11,6 +11,7 @@
 #include <exception>
 #include <filesystem>
 
+#include "scene/automatic_grid.hpp"
 #include "scene/case_reader.hpp"
 #include "scene/dynamic_load.hpp"
 #include "scene/film_case.hpp"
@@ -204,6 +205,8 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   r.planned_steps = static_cast<int>(s_steps.size()) - 1;
   r.step_rule = plan.step_rule;
   r.grid_rule = plan.grid_rule;
+  if (!ro.quiet && film.grid_points == 0 && grid.size() > internal::kAutomaticGridMinNodes)
+    std::fprintf(stderr, "grid %d nodes (%s)\n", grid.size(), plan.grid_rule.c_str());
 
   // The result file is open (under its temporary name) for the whole run.
   std::unique_ptr<Hdf5Writer> h5;

@@ -7,11 +7,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 
 #include "support/scratch_path.hpp"
 #include "tehl/ehl/hertz_edge.hpp"
 #include "tehl/scene/contact_scene.hpp"
+#include "unit/cli/run_tehl.hpp"
 
 namespace tehl {
 namespace {
@@ -91,6 +93,55 @@ TEST(AutomaticGrid, ARigidFilmGetsTheSmallestGrid) {
   ASSERT_TRUE(r.converged());
   EXPECT_EQ(r.grid_points, internal::kAutomaticGridMinNodes);
   EXPECT_NE(r.grid_rule.find("rigid"), std::string::npos) << r.grid_rule;
+}
+
+// `tehl case --check` tells what a run would solve on before it runs: the heavy disc above gets
+// the grid the run gets, with its rule; a given count is reported as given.
+TEST(AutomaticGrid, CaseCheckReportsTheGridARunWouldUse) {
+  const std::string heavy = Disc("check_heavy", 1.0e6, 0.1, "");
+  const ContactRunResult run = RunDisc(heavy);
+  const testing::RunResult check = testing::RunTehl("case --check '" + heavy + "'");
+  ASSERT_TRUE(check.exited);
+  EXPECT_EQ(check.exit_code, 0) << check.err;
+  EXPECT_NE(check.out.find("line contact on " + std::to_string(run.grid_points) + " nodes (" +
+                           run.grid_rule + ")"),
+            std::string::npos)
+      << check.out;
+  const std::string given = Disc("check_given", 1.0e5, 1.0, "grid_points = 257");
+  EXPECT_NE(testing::RunTehl("case --check '" + given + "'")
+                .out.find("on 257 nodes ([numerics] grid_points = 257)"),
+            std::string::npos);
+}
+
+// A gear case samples its films along the path: the seed 004 pair (cases/seed004_sae40.toml)
+// without its grid_points keeps 513 nodes (its narrowest edge spans about 34 cells there);
+// the same power at 50 rpm instead of 1000 carries 20 times the load at a twentieth of the
+// speed, whose edges need a finer grid.
+TEST(AutomaticGrid, AGearCaseSizesItsGridOnTheNarrowestEdgeAlongThePath) {
+  std::ifstream in(std::string(TEHL_SOURCE_DIR) + "/cases/seed004_sae40.toml");
+  std::string text, line;
+  while (std::getline(in, line))
+    if (line.rfind("grid_points", 0) != 0) text += line + "\n";
+  ASSERT_NE(text.find("pinion_speed_rpm = 1000.0"), std::string::npos);
+  const fs::path dir = testing::ScratchPath("tehl_automatic_grid", "gear");
+  fs::create_directories(dir);
+  auto write = [&](const std::string& name, const std::string& body) {
+    const std::string path = (dir / name).string();
+    std::ofstream(path) << body;
+    return path;
+  };
+  const std::string nominal = write("nominal.toml", text);
+  std::string slow = text;
+  slow.replace(slow.find("pinion_speed_rpm = 1000.0"), 25, "pinion_speed_rpm = 50.0");
+  const std::string heavy = write("slow.toml", slow);
+  const testing::RunResult a = testing::RunTehl("case --check '" + nominal + "'");
+  EXPECT_EQ(a.exit_code, 0) << a.err;
+  EXPECT_NE(a.out.find("on 513 nodes (automatic"), std::string::npos) << a.out;
+  const testing::RunResult b = testing::RunTehl("case --check '" + heavy + "'");
+  EXPECT_EQ(b.exit_code, 0) << b.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(b.out, m, std::regex(R"(on (\d+) nodes \(automatic)"))) << b.out;
+  EXPECT_GT(std::stoi(m[1]), internal::kAutomaticGridMinNodes) << b.out;
 }
 
 }  // namespace
