@@ -75,6 +75,9 @@ int RunGear(const RunArgs& a) {
                 ok == r.steps.size() ? "" : " (converged steps)");
   }
   PrintCycleFlash(r);
+  NoteNewtonianFriction(r, [](size_t k, const MeshCycleStep& s) {
+    return Where("step %zu, s = %.4g mm", k, s.s_m * 1e3);
+  });
   NoteCyclePeclet(r);
   NoteCycleSpikes(r);
   NoteCycleEdges(r);
@@ -117,6 +120,9 @@ int RunContact(const RunArgs& a) {
     NoteContactInlet(last.inlet, r.x_start_b);
   }
   NoteContactPeclet(r);
+  NoteNewtonianFriction(r, [](size_t k, const ContactStepRecord& s) {
+    return Where("step %zu, t = %.4g s", k, s.time_s);
+  });
   NoteRestarts(r.steps, [](size_t k, const ContactStepRecord& s) {
     return Where("step %zu (t = %.4g s)", k, s.time_s);
   });

@@ -231,4 +231,20 @@ void NoteCycleInlet(const MeshCycleResult& r) {
       100 * kInletTargetDeficit);
 }
 
+void PrintNewtonianFrictionNote(size_t count, size_t films, double mu, const std::string& where) {
+  if (films > 1)
+    std::printf(
+        "note: in %zu of the %zu films the Newtonian friction coefficient exceeds %.1f, "
+        "up to %.3g (%s)",
+        count, films, kNewtonianFrictionNote, mu, where.c_str());
+  else
+    std::printf("note: the Newtonian film's friction coefficient is %.3g", mu);
+  std::printf(
+      ": a full film carries at most about 0.1 of its pressure as shear stress (the limiting "
+      "shear stress of lubricants), so a Newtonian mu above %.1f, and the flash temperature "
+      "from it, are not physical; [effects] non_newtonian = true bounds the shear stress "
+      "(Ree-Eyring, docs/thermal.md)\n",
+      kNewtonianFrictionNote);
+}
+
 }  // namespace tehl::cli

@@ -54,6 +54,32 @@ void NoteCycleInlet(const MeshCycleResult& r);
 // `format` with k and value, e.g. Where("step %zu (s = %.4g mm)", 70, 4.913).
 std::string Where(const char* format, size_t k, double value);
 
+// A full film carries as shear stress at most about a tenth of its pressure: the limiting
+// shear stress of lubricants grows as Lambda p with Lambda about 0.03 ... 0.1 (Bair & Winer
+// 1979; Hoglund 1989), so EHL traction coefficients stay near or below 0.1. A Newtonian film
+// has no such bound, and at gear pressures its viscosity makes mu grow without limit (the
+// isothermal seed 004 cycle: 0.52 at A; 20 times its load: above 1e6). Above twice the bound
+// a run notes that mu, and the flash temperature from it, are not physical [-].
+inline constexpr double kNewtonianFrictionNote = 0.2;
+
+void PrintNewtonianFrictionNote(size_t count, size_t films, double mu, const std::string& where);
+
+// The note above over the converged films of a run (`where(k, step)` names film k); nothing
+// when the run's film is non-Newtonian (effects.non_newtonian).
+template <typename Run, typename Where>
+void NoteNewtonianFriction(const Run& r, Where where) {
+  if (r.non_newtonian) return;
+  size_t count = 0, worst = 0;
+  for (size_t k = 0; k < r.steps.size(); ++k) {
+    if (!Usable(r, k) || !(r.steps[k].friction_coefficient > kNewtonianFrictionNote)) continue;
+    if (count++ == 0 || r.steps[k].friction_coefficient > r.steps[worst].friction_coefficient)
+      worst = k;
+  }
+  if (count > 0)
+    PrintNewtonianFrictionNote(count, UsableSteps(r), r.steps[worst].friction_coefficient,
+                               where(worst, r.steps[worst]));
+}
+
 // Steps whose transient solve failed and whose film is the steady one at their time
 // ([numerics] failed_step = "steady_restart"): where they are, and why the first one failed.
 // `where(k, step)` names step k ("step 70 (s = 4.913 mm)").

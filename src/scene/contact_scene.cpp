@@ -76,6 +76,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   result.inlet_temperature_k = film.inlet_temperature_k;
   result.finite_peclet = film.effects.finite_peclet;
   result.thermal = film.effects.thermal;
+  result.non_newtonian = film.effects.non_newtonian;
   result.solids = film.solids;
   FilmState state;
   const bool thermal = film.effects.thermal;

@@ -239,6 +239,7 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   r.inlet_viscosity_pa_s = inlet.eta_pa_s;
   r.pressure_viscosity_per_pa = inlet.deta_dp / inlet.eta_pa_s;
   r.thermal = film.effects.thermal;
+  r.non_newtonian = film.effects.non_newtonian;
   r.finite_peclet = film.effects.finite_peclet;
   r.film_nodes = film.options.film_nodes;
   const bool keep_field = r.thermal && doc.Bool("output", "temperature_field");

@@ -56,6 +56,7 @@ struct ContactRunResult {
   double inlet_temperature_k = 0;  // T0 of the oil and the bulk of both bodies [K]
   bool finite_peclet = false;      // effects.finite_peclet of the case
   bool thermal = false;            // effects.thermal of the case
+  bool non_newtonian = false;      // effects.non_newtonian of the case
   ContactSolids solids;            // thermal properties of bodies 1 and 2
   bool converged() const;   // every step usable
   int Restarts() const;     // time steps whose film is a steady restart

@@ -68,6 +68,7 @@ struct MeshCycleResult {
   std::vector<std::vector<double>> p_pa, h_m;   // profiles per step over x [Pa], [m]
   bool thermal = false;                         // effects.thermal of the case
   bool finite_peclet = false;                   // effects.finite_peclet of the case
+  bool non_newtonian = false;                   // effects.non_newtonian of the case
   int film_nodes = 0;                           // nodes across the film (thermal) [-]
   // Thermal runs only (empty otherwise), per step over x: mid-film temperature and the
   // surface temperatures of pinion and wheel [K]; the full field T(x, z) row-major (x, z)

@@ -190,5 +190,35 @@ TEST(RunNotes, ASlowDiscIsNotedInAThermalContactRun) {
       << f.out;
 }
 
+// A Newtonian film at gear pressures carries a shear stress no oil can (DESIGN.md section 4;
+// the limiting shear stress of lubricants is at most about 0.1 p): the isothermal seed 004
+// cycle has mu = 0.52 at A (docs/thermal.md "Friction"), above the note's 0.2. The Ree-Eyring
+// film bounds the stress (mu 0.04 at the pitch point), and the thermal Newtonian film's heating
+// keeps mu near 0.13 at A: neither gets the note.
+TEST(RunNotes, AnUnphysicalNewtonianFrictionIsNoted) {
+  const RunResult iso = RunTehl("run -q '" + Seed004Case(false, UniqueTempPath("out")) + "'");
+  ASSERT_TRUE(iso.exited);
+  ASSERT_EQ(iso.exit_code, 0) << iso.out << iso.err;
+  EXPECT_NE(iso.out.find("films the Newtonian friction coefficient exceeds 0.2, up to"),
+            std::string::npos)
+      << iso.out;
+  EXPECT_NE(iso.out.find("non_newtonian = true bounds the shear stress"), std::string::npos)
+      << iso.out;
+
+  std::string text = ReadAll(Seed004Case(false, UniqueTempPath("out")));
+  const size_t at = text.find("\nthermal = false\n");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 17, "\nthermal = false\nnon_newtonian = true\n");
+  const std::string eyring = UniqueTempPath("eyring.toml");
+  std::ofstream(eyring) << text;
+  const RunResult e = RunTehl("run -q '" + eyring + "'");
+  ASSERT_EQ(e.exit_code, 0) << e.out << e.err;
+  EXPECT_EQ(e.out.find("Newtonian friction"), std::string::npos) << e.out;
+
+  const RunResult hot = RunTehl("run -q '" + Seed004Case(true, UniqueTempPath("out")) + "'");
+  ASSERT_EQ(hot.exit_code, 0) << hot.out << hot.err;
+  EXPECT_EQ(hot.out.find("Newtonian friction"), std::string::npos) << hot.out;
+}
+
 }  // namespace
 }  // namespace tehl::testing
