@@ -55,8 +55,9 @@ void NoteCycleInlet(const MeshCycleResult& r);
 std::string Where(const char* format, size_t k, double value);
 
 // A full film carries as shear stress at most about a tenth of its pressure: the limiting
-// shear stress of lubricants grows as Lambda p with Lambda about 0.03 ... 0.1 (Bair & Winer
-// 1979; Hoglund 1989), so EHL traction coefficients stay near or below 0.1. A Newtonian film
+// shear stress of lubricants grows as tau_L0 + Lambda p with Lambda of about 0.1 or less (the
+// form of the lubricant files' [eyring] section; Bair & Winer 1979), so EHL traction
+// coefficients stay near or below 0.1. A Newtonian film
 // has no such bound, and at gear pressures its viscosity makes mu grow without limit (the
 // isothermal seed 004 cycle: 0.52 at A; 20 times its load: above 1e6). Above twice the bound
 // a run notes that mu, and the flash temperature from it, are not physical [-].
