@@ -25,6 +25,7 @@ import csv
 import itertools
 import json
 import os
+import re
 import subprocess
 import sys
 import time
@@ -49,6 +50,14 @@ DISC_BASE = {"contact.speed_1_m_s": "1.2", "contact.speed_2_m_s": "0.8",
              "effects.thermal": "true", "effects.non_newtonian": "true",
              "numerics.grid_points": "257", "numerics.film_nodes": "11",
              "numerics.newton_tolerance": "1e-8", "numerics.x_start_b": "-4.5"}
+# A heavily loaded, slow disc (p_H = 1.9 GPa): its Hertzian edge is narrow (docs/results.md,
+# "The edge note"), so its films need far finer grids than the base's; the automatic grid
+# (grid_points = 0, docs/case_format.md) is run beside the series.
+HEAVY_BASE = {"contact.load_n_per_m": "1.0e6", "contact.speed_1_m_s": "0.12",
+              "contact.speed_2_m_s": "0.08", "effects.thermal": "true",
+              "effects.non_newtonian": "true", "numerics.grid_points": "513",
+              "numerics.film_nodes": "11", "numerics.newton_tolerance": "1e-8",
+              "numerics.x_start_b": "-4.5"}
 # The inlet end of the grid, with grid_points raised with the domain so that the node spacing
 # stays that of the base (6 b / 256) and x = 0 stays a node: the error of a truncated inlet
 # alone, and its cost.
@@ -66,7 +75,14 @@ SERIES = {
              ("Nz", "numerics.film_nodes", ["5", "7", "11", "21"]),
              ("tol", "numerics.newton_tolerance", ["1e-4", "1e-6", "1e-8", "1e-10"]),
              INLET],
+    "heavy": [("N", "numerics.grid_points", ["257", "513", "1025", "2049", "4097", "8193"])],
 }
+# Runs beside the series (case, label, key, value): compared with the reference of the case's
+# grid series.
+EXTRA = [("heavy", "automatic grid", "numerics.grid_points", "0")]
+CASES = [("cycle", "cases/seed004_sae40.toml", CYCLE_BASE),
+         ("disc", "cases/disc_steady.toml", DISC_BASE),
+         ("heavy", "cases/disc_steady.toml", HEAVY_BASE)]
 EFFECT_BASE = {"effects.thermal": "true", "numerics.grid_points": "129",
                "numerics.steps": "80"}
 EFFECTS = [("base: thermal, elastic, transient, smooth, Newtonian", {}),
@@ -263,6 +279,37 @@ def series_tables(case_name, rows_by_series):
     return out
 
 
+def chosen_nodes(case):
+    """The node count a run printed (`grid N nodes (...)`, or a cycle's `grid N nodes`), or
+    None."""
+    try:
+        with open(case[:-5] + ".log") as f:
+            m = re.search(r"grid (\d+) nodes", f.read())
+    except OSError:
+        return None
+    return int(m.group(1)) if m else None
+
+
+def extra_lines(case_name, rows_by_series):
+    """The runs beside the series (EXTRA), each against the reference of the grid series."""
+    out = []
+    ref = reference(rows_by_series.get("N", []))
+    for name, label, key, v in EXTRA:
+        if name != case_name or label not in rows_by_series:
+            continue
+        r = rows_by_series[label][0]
+        n = chosen_nodes(r["case"])
+        base_cpu = next((x["cpu_s"] for x in rows_by_series["N"] if x["is_base"]), None)
+        errs = ", ".join(f"{q} {pct(rel_error(r[q], ref[q]))} %" for q, _ in QUANTITIES
+                         if r["ok"] and ref and ref[q] is not None)
+        out.append(f"\n**{case_name}, {label}** (`{key} = {v}`): "
+                   f"{'chose ' + str(n) + ' nodes' if n else 'node count not in its log'}; " +
+                   (f"errors against the reference: {errs}; " if errs else "did not converge; ") +
+                   f"CPU {fmt_t(r['cpu_s'])} s" +
+                   (f" ({r['cpu_s'] / base_cpu:.2f} of the base)" if base_cpu else "") + ".\n")
+    return out
+
+
 def cheapest(case_name, rows_by_series, q, target):
     """The cheapest combination of one setting per series whose estimated error in q is within
     target. Model (one setting varied at a time): the error of a combination is the sum of the
@@ -386,14 +433,17 @@ def main():
 
     # Expand every scene first (so that input problems show before anything runs).
     plan = []  # (case name, series label, value, is_base, scene file)
-    for case_name, base_case, base in [("cycle", "cases/seed004_sae40.toml", CYCLE_BASE),
-                                       ("disc", "cases/disc_steady.toml", DISC_BASE)]:
+    for case_name, base_case, base in CASES:
         scenes, meta = [], []
         for label, key, values, *extra in SERIES[case_name]:
             for v in values:
                 more = extra[0].get(v, {}) if extra else {}
                 scenes.append(dict(base, **{key: v}, **more))
                 meta.append((case_name, label, v, v == base[key] and not more))
+        for name, label, key, v in EXTRA:
+            if name == case_name:
+                scenes.append(dict(base, **{key: v}))
+                meta.append((case_name, label, v, False))
         files = expand(tehl, f"{case_name}_settings", os.path.join(ROOT, base_case), scenes,
                        scratch)
         plan += [m + (f,) for m, f in zip(meta, files)]
@@ -425,7 +475,7 @@ def main():
     print(f"accuracy_report.py: {len(to_run)} runs, {a.jobs} at a time", file=sys.stderr)
     results = {r["case"]: r for r in run_all(tehl, to_run, a.jobs, a.reuse)}
 
-    data = {"cycle": {}, "disc": {}}
+    data = {name: {} for name, _, _ in CASES}
     for case_name, label, v, is_base, f in plan:
         r = dict(results[first_of[(case_name, settings(f))]], is_base=is_base, value=v)
         data[case_name].setdefault(label, []).append(r)
@@ -486,10 +536,17 @@ def write_markdown(a, data, effects, elapsed, load_before, load_after):
               "the Newtonian thermal film does not converge on the sliding disc (SRR >= 0.2; "
               "docs/thermal.md, 'Open points'), so the disc series could not use it. The "
               "Newtonian seed 004 cycle itself converges at 513 and 1025 nodes and with 21 "
-              "film nodes (docs/thermal.md, 'The seed 004 cycle at full resolution').\n")
+              "film nodes (docs/thermal.md, 'The seed 004 cycle at full resolution').")
+    md.append("- **heavy**: the disc of **disc** at 1 MN/m (p_H = 1.9 GPa) and 0.12 / 0.08 m/s "
+              "(SRR 0.4), thermal and Ree-Eyring, steady; only the grid is varied, from 257 to "
+              "8193 nodes (base 513). Its Hertzian edge is narrow (docs/results.md, 'The edge "
+              "note'): about 3.6 cells on 513 nodes. Beside the series, the automatic grid "
+              "(`grid_points = 0`, the default: docs/case_format.md), with the node count it "
+              "chose.\n")
     md.append("## Settings\n")
-    for case_name in ["cycle", "disc"]:
+    for case_name, _, _ in CASES:
         md += series_tables(case_name, data[case_name])
+        md += extra_lines(case_name, data[case_name])
     md.append("\n![largest error against CPU time](accuracy_pareto.png)\n")
     md.append("The figure's error is the largest of the five quantities; on the cycle it is "
               "that of max p_max, the pressure spike near the outlet, which converges slowly "
@@ -505,7 +562,7 @@ def write_markdown(a, data, effects, elapsed, load_before, load_after):
               "as the base time times the product of the settings' CPU / base. The errors are "
               "against the finest runs, not the exact solution (see the Richardson line of "
               "the grid).\n")
-    for case_name in ["cycle", "disc"]:
+    for case_name, _, _ in CASES:
         for q in ["h_min", "h_c", "p_max", "T_max", "mu"]:
             grid = data[case_name]["N"]
             ref = reference(grid)

@@ -124,6 +124,21 @@ double FewestEdgeCells(const std::vector<double>& cells) {
   return fewest;
 }
 
+// The rows (grid nodes) of the NAME_profile.csv beside a contact run's NAME_steps.csv; 0 when
+// there is none.
+double ProfileRows(const std::string& steps_path) {
+  const std::string suffix = "_steps.csv";
+  if (steps_path.size() < suffix.size() ||
+      steps_path.compare(steps_path.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return 0;
+  std::ifstream in(steps_path.substr(0, steps_path.size() - suffix.size()) + "_profile.csv");
+  std::string line;
+  double rows = -1;  // the header
+  while (std::getline(in, line))
+    if (!line.empty()) ++rows;
+  return std::max(rows, 0.0);
+}
+
 SceneRow GearRow(const std::string& path) {
   const Hdf5Reader h5(path);
   SceneRow r;
@@ -156,6 +171,8 @@ SceneRow GearRow(const std::string& path) {
     for (double v : h5.Doubles("/solver/steady_restart")) r.steady_restarts += v;
   if (h5.Exists("/cycle/edge_cells"))
     r.edge_cells_min = FewestEdgeCells(h5.Doubles("/cycle/edge_cells"));
+  if (h5.Exists("/profiles/x"))
+    r.grid_points = static_cast<double>(h5.Doubles("/profiles/x").size());
   const bool ok = h5.StringAttribute("/", "converged") == "true";
   r.status = ok ? "ok" : "not_converged";
   if (!ok) {
@@ -230,6 +247,7 @@ SceneRow ContactRow(const std::string& path) {
   r.t_surface_max_k = Max(surface);
   r.flash_blok_max_k = Max(flash);
   r.edge_cells_min = FewestEdgeCells(edge);
+  r.grid_points = ProfileRows(path);
   return r;
 }
 
@@ -276,6 +294,10 @@ const std::vector<SummaryColumn>& SummaryColumns() {
        "fewest grid cells across a film's Hertzian edge; below 10 that film is likely more "
        "than 1 % too thin (-1: rigid solids, or results of earlier versions)",
        &SceneRow::edge_cells_min},
+      {"grid_points", "grid_points", "-",
+       "nodes of the film grid: the case's [numerics] grid_points, or the automatic grid's "
+       "(0: not in the result)",
+       &SceneRow::grid_points},
   };
   return cols;
 }

@@ -75,6 +75,16 @@ TEST(Sweep, IndexEqualsTheScenesRunOneByOne) {
   const std::string csv = testing::ReadAll(out + "/index.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4) << csv;
   EXPECT_EQ(csv.rfind("scene,operating.power_w,h_min_min_m", 0), 0u) << csv;
+  // The grid of each scene: the reduced case's grid_points (the grid of the mesh cycle above).
+  const auto rows = CsvCells(csv);
+  const size_t ig = std::find(rows[0].begin(), rows[0].end(), "grid_points") - rows[0].begin();
+  ASSERT_LT(ig, rows[0].size());
+  MeshCycleRunOptions quiet;
+  quiet.quiet = true;
+  quiet.write_files = false;
+  const MeshCycleResult first = RunMeshCycle(out + "/scenes/scene_0000.toml", quiet);
+  for (size_t k = 1; k < rows.size(); ++k)
+    EXPECT_EQ(rows[k][ig], std::to_string(first.x_m.size())) << k;
 
   // --resume over the finished sweep rebuilds every row from the result files: each column
   // equals the fresh row (wall time included: both are the HDF5 wall_time attribute), except

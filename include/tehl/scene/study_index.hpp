@@ -36,6 +36,8 @@ struct SceneRow {
   double edge_cells_min = -1;     // fewest grid cells across a film's Hertzian edge
                                   //   (hertz_edge.hpp); -1: rigid solids, or a result of an
                                   //   earlier version [-]
+  double grid_points = 0;         // nodes of the film grid (docs/case_format.md; 0: not in the
+                                  //   result) [-]
   int steps = 0;                  // rows of the cycle table [-]
 };
 

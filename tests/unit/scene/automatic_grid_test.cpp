@@ -44,7 +44,7 @@ ContactRunResult RunDisc(const std::string& path) {
   return RunContactCase(path, o);
 }
 
-// 1 MN/m at 0.1 m/s (p_H = 1.9 GPa): the edge is estimated at 14 um, 0.7 cells of 513 nodes
+// 1 MN/m at 0.1 m/s (p_H = 1.9 GPa): the edge is estimated at 14 um, 3.6 cells of 513 nodes
 // over -4.5 b ... 1.5 b. The automatic grid must give the film the edge note's bound
 // (kEdgeDeficitConstant / kEdgeResolvedCells^2 = 1.1 %, docs/validation.md section 3.2)
 // against the film on twice its nodes; on the old default of 513 nodes the film is too thin

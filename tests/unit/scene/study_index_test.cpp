@@ -186,6 +186,9 @@ TEST(StudyIndex, ASweepNotesScenesWhoseHertzianEdgeIsNotResolved) {
   const size_t ie = Column(cells[0], "edge_cells_min");
   EXPECT_NEAR(std::stod(cells[1][ie]), 0.67, 0.01);
   EXPECT_GT(std::stod(cells[2][ie]), 10.0);
+  const size_t ig = Column(cells[0], "grid_points");
+  EXPECT_EQ(cells[1][ig], "513");
+  EXPECT_EQ(cells[2][ig], "8193");
   fs::remove_all(dir);
 }
 
