@@ -18,5 +18,6 @@ list(APPEND TEHL_SOURCES
   src/scene/study_reader.cpp
   src/scene/study.cpp
   src/scene/study_index.cpp
+  src/scene/scene_row_reader.cpp
   src/scene/study_run.cpp
 )
