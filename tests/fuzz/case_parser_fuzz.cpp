@@ -4,7 +4,8 @@
 //  1. as a case file, exactly as `tehl case --check` does it (src/cli/case_command.cpp): the
 //     text -> Document (TOML + case schema) -> cross-key rules (ReadCaseDocument) -> gear
 //     reader (geometry, stiffness, dynamic load) -> film reader (lubricant file, effects,
-//     numerics, surfaces). The text is handed over through an anonymous in-memory file
+//     numerics, surfaces) -> the run's plan (a gear case's steps and grid, a contact case's
+//     grid, automatic or given). The text is handed over through an anonymous in-memory file
 //     (memfd), so ReadCaseDocument's file path is the one the program runs, NUL check
 //     included, without touching the disk;
 //  2. as a lubricant file, through Lubricant::FromString (schema, laws built by the factory).
@@ -21,11 +22,14 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "scene/case_reader.hpp"
+#include "scene/contact_case.hpp"
 #include "scene/film_case.hpp"
 #include "scene/gear_case.hpp"
+#include "scene/mesh_cycle_plan.hpp"
 #include "tehl/error.hpp"
 #include "tehl/lubricant/lubricant.hpp"
 
@@ -60,8 +64,16 @@ void CheckCase(const std::string& path) {
   try {
     Document doc = ReadCaseDocument(path);
     if (doc.problems().empty()) {
-      if (doc.HasSection("gear")) ReadGearCase(doc);
-      ReadFilmCase(doc);
+      std::optional<GearCase> gear;
+      if (doc.HasSection("gear")) gear = ReadGearCase(doc);
+      const FilmCase film = ReadFilmCase(doc);
+      if (doc.problems().empty() && gear && gear->pair) {
+        const CyclePath cycle(*gear);
+        PlanMeshCycle(doc, cycle, gear->ReducedModulusPa(), film);
+      } else if (doc.problems().empty() && doc.HasSection("contact")) {
+        const ContactInputs in = ReadContact(doc);
+        if (doc.problems().empty()) PlanContactGrid(in, film);
+      }
     }
     doc.ThrowIfProblems();
   } catch (const tehl::InputError&) {
