@@ -1,6 +1,7 @@
 // tehl sweep STUDY [-j N] [--resume] [--dry-run] [-q] [-o DIR]: expands a study file into
 // scenes and runs them on a pool of threads, over MPI ranks when started by mpirun (static
 // round-robin: scene i on rank i mod K); rank 0 writes the index once every rank is done.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -78,7 +79,12 @@ int RunSweep(const SweepArgs& a) {
   const std::vector<SceneRow> gathered = SceneRowsFromText(all);
   const auto paths = WriteStudyIndex(study, gathered);
   int ok = 0, not_converged = 0, failed = 0, resumed = 0, restarted = 0, unresolved_edge = 0;
+  double fewest_nodes = 0, most_nodes = 0;  // over the scenes whose result has a grid
   for (const auto& r : gathered) {
+    if (r.grid_points > 0) {
+      fewest_nodes = fewest_nodes > 0 ? std::min(fewest_nodes, r.grid_points) : r.grid_points;
+      most_nodes = std::max(most_nodes, r.grid_points);
+    }
     ok += r.status == "ok";
     restarted += r.steady_restarts > 0;
     unresolved_edge += r.edge_cells_min >= 0 && r.edge_cells_min < kEdgeResolvedCells;
@@ -99,6 +105,12 @@ int RunSweep(const SweepArgs& a) {
         "(index column edge_cells_min): their h_c is likely more than 1 %% too thin; more "
         "[numerics] grid_points resolve it (docs/results.md, \"The edge note\")\n",
         unresolved_edge, kEdgeResolvedCells);
+  if (most_nodes > fewest_nodes)
+    std::printf(
+        "note: the scenes ran on grids of %.0f to %.0f nodes (index column grid_points; the "
+        "automatic grid follows each scene's films, docs/case_format.md): their wall times "
+        "differ by that too\n",
+        fewest_nodes, most_nodes);
   std::printf("wrote %s and %s\n", paths[0].c_str(), paths[1].c_str());
   return ok == static_cast<int>(gathered.size()) ? kExitOk : kExitNotConverged;
 }

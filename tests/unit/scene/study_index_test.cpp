@@ -189,6 +189,8 @@ TEST(StudyIndex, ASweepNotesScenesWhoseHertzianEdgeIsNotResolved) {
   const size_t ig = Column(cells[0], "grid_points");
   EXPECT_EQ(cells[1][ig], "513");
   EXPECT_EQ(cells[2][ig], "8193");
+  EXPECT_NE(r.out.find("note: the scenes ran on grids of 513 to 8193 nodes"), std::string::npos)
+      << r.out;
   fs::remove_all(dir);
 }
 
