@@ -15,6 +15,7 @@
 
 #include "ehl/fftw_planner.hpp"
 #include "ehl/fftw_wisdom.hpp"
+#include "ehl/spectrum_product.hpp"
 #include "tehl/error.hpp"
 #include "tehl/units.hpp"
 
@@ -166,17 +167,7 @@ void ElasticDeflection::Apply(const double* p_pa, double* v_m) const {
   std::copy(p_pa, p_pa + d.n, d.real_buffer);
   std::fill(d.real_buffer + d.n, d.real_buffer + d.m, 0.0);
   fftw_execute(d.forward);
-  // The spectrum times the kernel's, written out: std::complex's operator* checks every product
-  // for NaN (Annex G, a library call on that path), which keeps the loop from vectorizing.
-  // The same products and sums, so the same bits for finite values.
-  const int mc = d.m / 2 + 1;
-  double* s = &d.spectrum[0][0];
-  const double* k = reinterpret_cast<const double*>(d.kernel_hat.data());
-  for (int q = 0; q < 2 * mc; q += 2) {
-    const double sr = s[q], si = s[q + 1], kr = k[q], ki = k[q + 1];
-    s[q] = sr * kr - si * ki;
-    s[q + 1] = sr * ki + si * kr;
-  }
+  internal::MultiplySpectrum(d.spectrum, d.kernel_hat.data(), d.m / 2 + 1);
   fftw_execute(d.backward);
   std::copy(d.real_buffer, d.real_buffer + d.n, v_m);
 }

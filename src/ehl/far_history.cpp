@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "ehl/fftw_planner.hpp"
+#include "ehl/spectrum_product.hpp"
 
 namespace tehl::internal {
 
@@ -97,12 +98,7 @@ void FarHistory::Apply(const double* s, int stride, double* y) const {
   std::fill(p.real, p.real + m_, 0.0);
   for (int k = 1; k < n_ - 1; ++k) p.real[k] = s[static_cast<long>(k) * stride];
   fftw_execute(p.forward);
-  for (int q = 0; q < m_ / 2 + 1; ++q) {
-    const std::complex<double> r =
-        std::complex<double>(p.spectrum[q][0], p.spectrum[q][1]) * kernel_hat_[q];
-    p.spectrum[q][0] = r.real();
-    p.spectrum[q][1] = r.imag();
-  }
+  MultiplySpectrum(p.spectrum, kernel_hat_.data(), m_ / 2 + 1);
   fftw_execute(p.backward);
   const double s_last = s[static_cast<long>(n_ - 1) * stride];
   for (int i = 0; i < n_; ++i) y[i] = p.real[i] + inlet_[i] * s[0] + outlet_[i] * s_last;
