@@ -3,7 +3,7 @@
 // convolution by FFT (elastic_deflection.cpp, far_history.cpp). Written as real products and
 // sums: std::complex's operator* checks every product for NaN (C Annex G, a library call on
 // that path), which keeps the loop from vectorizing. The same products and sums, so the same
-// bits for finite values (docs/performance.md: the FFT convolution 13-17 % faster).
+// bits for finite values (docs/performance.md: the FFT convolution 11-17 % faster).
 #pragma once
 
 #include <fftw3.h>
