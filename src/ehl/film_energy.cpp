@@ -236,9 +236,12 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
     }
   }
   if (!t->Matches(n, nz)) *t = Initial();
-  if (!system_ || !options_.reuse_factorization)
+  if (!system_ || !options_.reuse_factorization) {
     system_ = std::make_unique<internal::FilmEnergySystem>(grid_, nz, options_.history_near_cells,
                                                            options_.finite_peclet);
+    krylov_steps_ = false;
+    last_krylov_step_ = 0;
+  }
   internal::FilmEnergySystem& system = *system_;
   const int krylov_before = system.krylov_iterations();
 
@@ -256,8 +259,12 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
   bool last_fresh_exact = false;  // the previous step had a fresh factorization of the full A
   int poor_after_exact = 0;       // poor steps right after one
   // Once the lagged history stalls the chord steps (below), the rest of the steps are Krylov
-  // steps: GMRES on the whole operator (FilmEnergySystem::Correction).
-  bool krylov = false;
+  // steps: GMRES on the whole operator (FilmEnergySystem::Correction). So are all steps of the
+  // later Solves on the same system: the coupling loop re-solves a slowly changing film, and
+  // rediscovering the stall cost every Solve two fresh factorizations and two diverging chord
+  // steps (taken, tens of kelvin) that the Krylov steps then had to undo (docs/performance.md,
+  // "Energy solves on fine grids").
+  bool krylov = krylov_steps_ && system.lags_far_history();
   for (int it = 1; it <= options_.max_iterations; ++it) {
     bool linear = true;
     for (int i = 0; i < n; ++i)
@@ -280,7 +287,12 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
     // First the cheap factorization without the reverse-flow couplings (exact when there is
     // no reverse flow).
     if (!system.HasFactorization()) ok = factorize(false);
+    // A Krylov step preconditioned by an old factorization takes more GMRES iterations the
+    // more the film has moved since: past kKrylovRefresh in the last step, factorize afresh.
+    if (ok && krylov && last_krylov_step_ > kKrylovRefresh) ok = factorize(true);
+    const int krylov_done = system.krylov_iterations();
     ok = ok && system.Correction(x, krylov, &delta);
+    if (krylov) last_krylov_step_ = system.krylov_iterations() - krylov_done;
     double change = ok ? ChangeOfTemperatures(delta, n, nz) : 0.0;
     // A step that fails, or whose contraction r = change / last_change would need more than
     // max_chord_steps further steps to reach the tolerance, is redone with a fresh factorization
@@ -296,9 +308,18 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
       // history into A instead, as before, made KLU's factors dense triangles: the 1025-node
       // seed 004 cycle took 19.9 s instead of 9.0 s (docs/performance.md).
       if (system.lags_far_history() &&
-          (options_.finite_peclet || (after_exact && ++poor_after_exact >= 2)))
+          (options_.finite_peclet || (after_exact && ++poor_after_exact >= 2))) {
         krylov = true;
+        // Sticky only where the chord steps diverged (r >= 1), with the high-Peclet history.
+        // Where they merely converge slowly, or with finite Peclet numbers (the switch costs
+        // one step there), chord steps are cheaper in the later Solves: Krylov steps
+        // throughout took the 1025-node seed 004 cycle from 6.9 to 9.8 s and the main job with
+        // finite_peclet from 3.2 to 4.2 s (docs/performance.md).
+        krylov_steps_ = !options_.finite_peclet && r >= 1;
+      }
+      const int before = system.krylov_iterations();
       ok = factorize(true) && system.Correction(x, krylov, &delta);
+      if (krylov) last_krylov_step_ = system.krylov_iterations() - before;
       if (ok) change = ChangeOfTemperatures(delta, n, nz);
       r = 0;
     }

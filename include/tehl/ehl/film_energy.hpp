@@ -192,6 +192,13 @@ class FilmEnergySolver {
   double t0_;
   Options options_;
   mutable std::unique_ptr<internal::FilmEnergySystem> system_;  // kept factorization
+  // Whether a Solve on the kept system_ found the chord steps stalled by the far history (so
+  // the later Solves on it take Krylov steps from their first step on).
+  mutable bool krylov_steps_ = false;
+  // GMRES iterations of the latest Krylov step [-], and the count past which the next step
+  // factorizes afresh [-].
+  mutable int last_krylov_step_ = 0;
+  static constexpr int kKrylovRefresh = 10;
 };
 
 std::string ToString(FilmEnergySolver::Termination t);
