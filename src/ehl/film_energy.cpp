@@ -288,8 +288,10 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
     // no reverse flow).
     if (!system.HasFactorization()) ok = factorize(false);
     // A Krylov step preconditioned by an old factorization takes more GMRES iterations the
-    // more the film has moved since: past kKrylovRefresh in the last step, factorize afresh.
-    if (ok && krylov && last_krylov_step_ > kKrylovRefresh) ok = factorize(true);
+    // more the film has moved since: past kKrylovRefresh in the last step, factorize afresh,
+    // without the history inside recirculation zones (GMRES carries all of A; the cheaper
+    // factors cost fewer triangular solves than the exact ones save in GMRES iterations).
+    if (ok && krylov && last_krylov_step_ > kKrylovRefresh) ok = factorize(false);
     const int krylov_done = system.krylov_iterations();
     ok = ok && system.Correction(x, krylov, &delta);
     if (krylov) last_krylov_step_ = system.krylov_iterations() - krylov_done;
