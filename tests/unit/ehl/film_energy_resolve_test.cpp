@@ -16,16 +16,11 @@
 namespace tehl {
 namespace {
 
-using testing::EhlLikeField;
-using testing::EhlLikeParameters;
-using testing::EnergyTestOil;
-
 constexpr double kT0 = testing::kReferenceT0;
 
-// Polymer-like solids under a 0.1 um film: each unit of wall flux warms them some 200 times
-// more than bronze (film_energy_test.cpp, StronglyCoupledPolymerSolidsSatisfyTheWholeHistory),
-// so the history lagged outside the factorized matrix stalls the chord steps.
-const SolidThermal kPolymer{1300.0, 1340.0, 0.25};
+// Polymer-like solids under a 0.1 um film (testing::ThinEhlFilm): the history lagged outside
+// the factorized matrix stalls the chord steps.
+const SolidThermal kPolymer = testing::Polymer();
 
 FilmEnergySolver::Options Options() {
   FilmEnergySolver::Options o;
@@ -35,22 +30,18 @@ FilmEnergySolver::Options Options() {
 }
 
 TEST(FilmEnergyResolve, ALaterSolveOfAStronglyCoupledFilmStartsWithKrylovSteps) {
-  EhlLikeParameters c;
-  c.central_film_m = 1e-7;
-  const Lubricant oil = EnergyTestOil();
-  const UniformGrid g = UniformGrid::AroundHertz(c.half_width_m, 257);
-  const FilmFlowField f = EhlLikeField(g, 11, oil, c);
-  const MovingHeatSource src(g);
-  FilmEnergySolver kept(g, oil, kPolymer, kPolymer, kT0, Options());
+  const testing::ThinEhlFilm film;
+  const MovingHeatSource src(film.g);
+  FilmEnergySolver kept(film.g, film.oil, kPolymer, kPolymer, kT0, Options());
   FilmTemperature t;
-  const auto first = kept.Solve(f, nullptr, 0.0, &t);
+  const auto first = kept.Solve(film.f, nullptr, 0.0, &t);
   ASSERT_TRUE(first.usable()) << first.BriefReport();
   // The first Solve found the stall: it took GMRES steps, after at least two factorizations
   // of the full matrix (the rule of FilmEnergySolver::Solve).
   ASSERT_GT(first.krylov_iterations, 0);
   ASSERT_GE(first.factorizations, 2);
   for (double scale : {1.01, 1.03, 0.98}) {
-    FilmFlowField hotter = f;
+    FilmFlowField hotter = film.f;
     hotter.heating_w_m3 *= scale;
     const auto again = kept.Solve(hotter, nullptr, 0.0, &t);
     ASSERT_TRUE(again.usable()) << scale << ": " << again.BriefReport();
@@ -64,13 +55,13 @@ TEST(FilmEnergyResolve, ALaterSolveOfAStronglyCoupledFilmStartsWithKrylovSteps) 
     // The answer is the film's own: a fresh solver on the same film agrees to ten times the
     // tolerance, and the surfaces satisfy the whole history (the O(n^2) moving-heat-source sums
     // of their fluxes) to 1e-6 of the rise.
-    FilmEnergySolver fresh(g, oil, kPolymer, kPolymer, kT0, Options());
+    FilmEnergySolver fresh(film.g, film.oil, kPolymer, kPolymer, kT0, Options());
     FilmTemperature u;
     ASSERT_TRUE(fresh.Solve(hotter, nullptr, 0.0, &u).usable()) << scale;
     EXPECT_LT((t.t_k - u.t_k).cwiseAbs().maxCoeff(), 10 * Options().tolerance_k) << scale;
     const double rise = t.MaxTemperature() - kT0;
-    const Eigen::VectorXd rise1 = src.Rise(kPolymer, c.u1_m_s, t.q1_w_m2);
-    const Eigen::VectorXd rise2 = src.Rise(kPolymer, c.u2_m_s, t.q2_w_m2);
+    const Eigen::VectorXd rise1 = src.Rise(kPolymer, film.c.u1_m_s, t.q1_w_m2);
+    const Eigen::VectorXd rise2 = src.Rise(kPolymer, film.c.u2_m_s, t.q2_w_m2);
     EXPECT_LT((t.t1_k.array() - kT0 - rise1.array()).abs().maxCoeff(), 1e-6 * rise) << scale;
     EXPECT_LT((t.t2_k.array() - kT0 - rise2.array()).abs().maxCoeff(), 1e-6 * rise) << scale;
   }

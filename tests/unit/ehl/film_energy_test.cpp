@@ -373,12 +373,12 @@ TEST(FilmEnergySolver, StronglyCoupledPolymerSolidsSatisfyTheWholeHistory) {
   // O(n^2) moving-heat-source sums of its fluxes (the derivation in surface_temperature_test.cpp)
   // to 1e-6 of the rise, the balance closes within 1 % (VALIDATION.md section 4), and the three
   // agree to ten times the tolerance.
-  const SolidThermal polymer{1300.0, 1340.0, 0.25};
-  EhlLikeParameters c;
-  c.central_film_m = 1e-7;
-  const Lubricant oil = EnergyTestOil();
-  const UniformGrid g = UniformGrid::AroundHertz(c.half_width_m, 257);
-  const FilmFlowField f = EhlLikeField(g, 11, oil, c);
+  const SolidThermal polymer = testing::Polymer();
+  const testing::ThinEhlFilm film;
+  const EhlLikeParameters& c = film.c;
+  const Lubricant& oil = film.oil;
+  const UniformGrid& g = film.g;
+  const FilmFlowField& f = film.f;
   const MovingHeatSource src(g);
   Eigen::MatrixXd whole;
   for (int near : {1000, FilmEnergySolver::Options{}.history_near_cells, 0}) {

@@ -84,4 +84,23 @@ inline FilmFlowField EhlLikeField(const UniformGrid& g,
   return f;
 }
 
+// Polymer-like solids: rho 1300 kg/m^3, c 1340 J/(kg K), k 0.25 W/(m K) (effusivity 660
+// against 12 600 for bronze).
+inline SolidThermal Polymer() { return SolidThermal{1300.0, 1340.0, 0.25}; }
+
+// The EHL-like film under a 0.1 um film on 257 nodes and 11 film nodes. Each unit of wall
+// flux warms polymer solids here some 200 times more than bronze (film conduction k/h times
+// F 2 sqrt(L)), so the surface history lagged outside the energy solver's factorized matrix
+// stalls its chord steps.
+struct ThinEhlFilm {
+  EhlLikeParameters c = [] {
+    EhlLikeParameters p;
+    p.central_film_m = 1e-7;
+    return p;
+  }();
+  Lubricant oil = EnergyTestOil();
+  UniformGrid g = UniformGrid::AroundHertz(c.half_width_m, 257);
+  FilmFlowField f = EhlLikeField(g, 11, oil, c);
+};
+
 }  // namespace tehl::testing
