@@ -83,6 +83,41 @@ TEST(TransientVerification, SuddenLoadDoublingConvergesAtEveryStepAndSettles) {
   EXPECT_NEAR(hc.back() / target, 1.0, 1e-6);
 }
 
+// A step that needs substeps ends with a history whose last interval is a substep. The
+// next whole step would then be a variable-step BDF2 step at the ratio `substeps` (4 after 4
+// substeps), beyond the zero-stability bound 1 + sqrt(2) of variable-step BDF2 (Grigorieff
+// 1983), which amplifies the substeps' errors (docs/theory.md, "Squeeze term"). The history
+// must keep the two whole-step levels instead: rho h at the start of the step as q2, dt as the
+// last interval.
+TEST(TransientVerification, AfterSubstepsTheHistoryKeepsTheWholeStepLevels) {
+  // The steady film at a tenth of the load, then transient steps with a Newton budget of 15
+  // iterations, and the whole load in one step (p_H 0.25 -> 0.8 GPa): in one piece that step
+  // takes 18 iterations, so it is split.
+  FilmState st;
+  ASSERT_TRUE(MoesSolver(kPoint, kNodes).solver.SolveSteady(kPoint.Conditions(0.1), &st).usable());
+  LineContactSolver::Options o;
+  o.max_iterations = 15;
+  MoesSolver ms(kPoint, kNodes, o, /*transient=*/true);
+  ms.solver.BeginTransient(kPoint.Conditions(0.1), st);
+  const double dt = TransitTime();
+  ASSERT_TRUE(ms.solver.Step(kPoint.Conditions(0.1), dt, &st).usable());
+  const LineContactSolver::TransientHistory before = ms.solver.SaveTransient();
+  ASSERT_EQ(before.levels, 2);
+  const LineContactSolver::Summary jump = ms.solver.Step(kPoint.Conditions(1.0), dt, &st);
+  ASSERT_TRUE(jump.usable()) << jump.BriefReport();
+  std::printf("load x 10 in one step: %d substeps, %d Newton iterations\n", jump.substeps,
+              jump.total_iterations);
+  ASSERT_GT(jump.substeps, 1);
+  const LineContactSolver::TransientHistory after = ms.solver.SaveTransient();
+  EXPECT_EQ(after.levels, 2);
+  EXPECT_EQ(after.dt_prev_s, dt);
+  ASSERT_EQ(after.q2.size(), before.q1.size());
+  EXPECT_EQ((after.q2 - before.q1).cwiseAbs().maxCoeff(), 0.0);
+  // And the march goes on: the next whole steps converge.
+  for (int k = 0; k < 3; ++k)
+    EXPECT_TRUE(ms.solver.Step(kPoint.Conditions(1.0), dt, &st).usable()) << k;
+}
+
 // H_c at t = T after `steps` equal steps of the load w0 (1 + 0.3 sin(pi t/T)), T = 8 t_b,
 // starting from the steady film at w0.
 double SineLoadHc(TimeScheme scheme, int steps) {

@@ -219,8 +219,9 @@ class LineContactSolver {
   // Step advances to state->time_s + dt with the conditions at the new time (BDF1 for the
   // first step, then the chosen scheme, variable steps allowed). A step that fails is
   // retried as 2 and then 4 substeps with linearly interpolated conditions (reported in the
-  // Summary). With effects.transient off, Step is a steady solve at the new conditions (the
-  // surfaces still move).
+  // Summary); after substeps the history keeps the whole-step levels. With
+  // effects.transient off, Step is a steady solve at the new conditions (the surfaces still
+  // move).
   void BeginTransient(const ContactConditions& c, const FilmState& initial);
   Summary Step(const ContactConditions& c_new, double dt_s, FilmState* state);
 
