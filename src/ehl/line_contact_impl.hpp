@@ -106,9 +106,10 @@ class LineContactSolver::Impl {
 
   // --- transient ----------------------------------------------------------------------
   struct History {
-    int levels = 0;            // stored levels (1 or 2)
-    Eigen::VectorXd q1, q2;    // rho h at t_{n-1}, t_{n-2}
+    int levels = 0;              // stored levels (1 to 3)
+    Eigen::VectorXd q1, q2, q3;  // rho h at t_{n-1}, t_{n-2}, t_{n-3}
     double dt_prev = 0;        // t_{n-1} - t_{n-2}
+    double dt_prev2 = 0;       // t_{n-2} - t_{n-3}
     ContactConditions c_prev;  // conditions at t_{n-1}
     Eigen::MatrixXd t_prev;    // film temperature at t_{n-2} (thermal; empty before) [K]
   };
@@ -116,7 +117,15 @@ class LineContactSolver::Impl {
   Eigen::VectorXd RhoH(const ContactConditions& c, FilmState s);
   void BeginTransient(const ContactConditions& c, const FilmState& s);
   internal::TimeDerivative Derivative(double dt) const;
-  Summary OneStep(const ContactConditions& c, double dt, FilmState* s);
+  // One step of dt to the conditions c; *time_error: the step's LocalTimeError (-1 when not
+  // estimated or not converged).
+  Summary OneStep(const ContactConditions& c, double dt, FilmState* s, double* time_error);
+  // Milne's estimate of the local error of a step of dt that gave rho h = q and pressure p,
+  // from the history before the step: the difference between q and the polynomial through
+  // the last levels extrapolated to the new time (quadratic for BDF2, linear for BDF1), scaled
+  // by the ratio of the error constants; the root mean square of error / q over the loaded
+  // interior nodes [-], or -1 without enough levels (docs/theory.md, "Time-step error").
+  double LocalTimeError(double dt, const Eigen::VectorXd& q, const Eigen::VectorXd& p) const;
   // Newton's start after the conditions changed from c_old to c: the pressure scaled by Hertz
   // similarity (half-width and peak), the central film by the film fit's ratio. Only when the
   // outlet would otherwise be more than a cell away; false (s untouched) otherwise.

@@ -96,6 +96,8 @@ std::vector<std::string> LineContactSolver::Options::Validate() const {
   };
   rule(upwind_order == 1 || upwind_order == 2, "upwind_order", upwind_order, "1 or 2");
   rule(tolerance > 0 && tolerance < 1, "tolerance", tolerance, "in (0, 1)");
+  rule(time_tolerance >= 0 && std::isfinite(time_tolerance), "time_tolerance", time_tolerance,
+       ">= 0 (0 = off)");
   rule(max_iterations >= 1, "max_iterations", max_iterations, ">= 1");
   rule(dense_max_nodes >= 5, "dense_max_nodes", dense_max_nodes, ">= 5");
   rule(gmres_restart >= 2, "gmres_restart", gmres_restart, ">= 2");

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "ehl/line_contact_impl.hpp"
 #include "tehl/units.hpp"
@@ -52,7 +53,9 @@ TimeDerivative LineContactSolver::Impl::Derivative(double dt) const {
 
 LineContactSolver::Summary LineContactSolver::Impl::OneStep(const ContactConditions& c,
                                                             double dt,
-                                                            FilmState* s) {
+                                                            FilmState* s,
+                                                            double* time_error) {
+  *time_error = -1;
   FilmState next = *s;
   next.time_s = s->time_s + dt;
   next.travel1_m = s->travel1_m + 0.5 * dt * (hist_.c_prev.u1_m_s + c.u1_m_s);
@@ -64,13 +67,57 @@ LineContactSolver::Summary LineContactSolver::Impl::OneStep(const ContactConditi
   if (sum.usable()) {
     if (eff_.thermal) hist_.t_prev = s->temperature.t_k;
     *s = next;
-    hist_.q2 = hist_.q1;
-    hist_.q1 = RhoH(c, next);
-    hist_.levels = std::min(hist_.levels + 1, 2);
+    Eigen::VectorXd q = RhoH(c, next);
+    *time_error = LocalTimeError(dt, q, next.p_pa);
+    hist_.q3 = std::move(hist_.q2);
+    hist_.q2 = std::move(hist_.q1);
+    hist_.q1 = std::move(q);
+    hist_.levels = std::min(hist_.levels + 1, 3);
+    hist_.dt_prev2 = hist_.dt_prev;
     hist_.dt_prev = dt;
     hist_.c_prev = c;
   }
   return sum;
+}
+
+double LineContactSolver::Impl::LocalTimeError(double dt,
+                                               const Eigen::VectorXd& q,
+                                               const Eigen::VectorXd& p) const {
+  if (!eff_.transient) return -1;
+  const bool bdf2 = opt_.time_scheme == TimeScheme::kBdf2;
+  const double h1 = hist_.dt_prev, h2 = hist_.dt_prev2;
+  Eigen::VectorXd predicted;
+  double scale = 0;  // local error = -scale (q - predicted)
+  if (bdf2 && hist_.levels >= 3 && h1 > 0 && h2 > 0) {
+    // The quadratic through (t_n - h1 - h2, q3), (t_n - h1, q2), (t_n, q1) misses x(t_n + dt)
+    // by x''' dt (dt + h1) (dt + h1 + h2) / 6, variable-step BDF2 (a0 = (1 + 2 w) / ((1 + w)
+    // dt), w = dt / h1) by -x''' dt (dt + h1) / (6 a0): the local error is their ratio times
+    // q - predicted, 2/11 of it for equal steps.
+    const double l0 = (dt + h1) * (dt + h1 + h2) / (h1 * (h1 + h2));
+    const double l1 = -dt * (dt + h1 + h2) / (h1 * h2);
+    const double l2 = dt * (dt + h1) / ((h1 + h2) * h2);
+    predicted = l0 * hist_.q1 + l1 * hist_.q2 + l2 * hist_.q3;
+    const double w = dt / h1;
+    const double inv_a0 = (1 + w) * dt / (1 + 2 * w);
+    scale = inv_a0 / (dt + h1 + h2 + inv_a0);
+  } else if (!bdf2 && hist_.levels >= 2 && h1 > 0) {
+    // Linear extrapolation misses by x'' dt (dt + h1) / 2, BDF1 by -x'' dt^2 / 2: 1/3 of
+    // q - predicted for equal steps.
+    predicted = hist_.q1 + (dt / h1) * (hist_.q1 - hist_.q2);
+    scale = dt / (2 * dt + h1);
+  } else {
+    return -1;
+  }
+  // Root mean square over the loaded nodes (p > 0) of the relative error: the largest one
+  // sits where the outlet's cavitation boundary crosses a node, which is not smooth in time.
+  double sum = 0;
+  int count = 0;
+  for (int i = 1; i + 1 < q.size(); ++i)
+    if (p[i] > 0 && q[i] > 0) {
+      sum += std::pow((q[i] - predicted[i]) / q[i], 2);
+      ++count;
+    }
+  return count ? scale * std::sqrt(sum / count) : -1;
 }
 
 bool LineContactSolver::Impl::PredictHertzSimilar(const ContactConditions& c_old,
@@ -132,12 +179,25 @@ LineContactSolver::Summary LineContactSolver::Impl::Step(const ContactConditions
   if (hist_.levels == 0) BeginTransient(c_new, *s);
   const History saved_hist = hist_;
   const FilmState saved_state = *s;
-  int total = 0, krylov = 0;
-  for (int parts : {1, 2, 4}) {
+  const double tolerance = eff_.transient ? opt_.time_tolerance : 0.0;
+  // The estimate's order in dt (BDF2 dt^3, BDF1 dt^2), for the substeps it asks for.
+  const double order = opt_.time_scheme == TimeScheme::kBdf2 ? 3.0 : 2.0;
+  int total = 0, krylov = 0, failures = 0;
+  int parts = 1;
+  // The last attempt that converged but missed the time tolerance: the step's answer if
+  // every attempt with more substeps fails to converge.
+  struct Attempt {
+    History hist;
+    FilmState state;
+    Summary sum;
+  };
+  std::optional<Attempt> converged;
+  for (;;) {
     hist_ = saved_hist;
     *s = saved_state;
     const ContactConditions c_old = hist_.c_prev;
     bool ok = true;
+    double error = -1;
     for (int k = 1; k <= parts && ok; ++k) {
       const double f = static_cast<double>(k) / parts;
       ContactConditions ck = c_new;
@@ -147,28 +207,54 @@ LineContactSolver::Summary LineContactSolver::Impl::Step(const ContactConditions
       ck.u2_m_s = c_old.u2_m_s + f * (c_new.u2_m_s - c_old.u2_m_s);
       ck.load_n_per_m = c_old.load_n_per_m + f * (c_new.load_n_per_m - c_old.load_n_per_m);
       ck.temperature_k = c_old.temperature_k + f * (c_new.temperature_k - c_old.temperature_k);
-      sum = OneStep(ck, dt / parts, s);
+      double e = -1;
+      sum = OneStep(ck, dt / parts, s, &e);
+      error = std::max(error, e);
       total += sum.total_iterations;
       krylov += sum.krylov_iterations;
       ok = sum.usable();
     }
     sum.substeps = parts;
-    if (ok) {
-      // The next step is dt long, while the history's last interval is a substep dt / parts.
-      // Variable-step BDF2 is zero-stable only for step ratios below 1 + sqrt(2) (Grigorieff
-      // 1983), and 4 substeps leave a ratio of 4 (a ladder up to 16 substeps, tried: after the
-      // load jump at B of a 8193-node cycle h_min then swung 26 -> 24 -> 11 -> 23 nm over three
-      // steps, against 20 -> 34 -> 37 -> 36 nm with this history). So the history keeps the
-      // two whole-step levels t_n - dt and t_n: the next step is the uniform BDF2 step, still
-      // second order.
-      if (parts > 1 && saved_hist.levels >= 1) {
-        hist_.q2 = saved_hist.q1;
-        hist_.dt_prev = dt;
-        hist_.levels = 2;
-        if (eff_.thermal) hist_.t_prev = saved_state.temperature.t_k;
+    sum.time_error = ok ? error : -1;
+    if (!ok) {
+      // Not converged: twice the substeps, twice at most (1, 2, 4 without error control).
+      if (failures == 2 || parts >= Options::kMaxSubsteps) {
+        if (!converged) break;
+        hist_ = std::move(converged->hist);
+        *s = std::move(converged->state);
+        sum = std::move(converged->sum);
+        parts = sum.substeps;
+      } else {
+        ++failures;
+        parts *= 2;
+        continue;
       }
-      break;
+    } else if (tolerance > 0 && error > tolerance && parts < Options::kMaxSubsteps) {
+      // The error falls as (dt / parts)^order: the next power of two that should meet the
+      // tolerance, at least twice the substeps.
+      converged = Attempt{hist_, *s, sum};
+      const double want = parts * std::pow(error / tolerance, 1.0 / order);
+      int next = 2 * parts;
+      while (next < want && next < Options::kMaxSubsteps) next *= 2;
+      parts = std::min(next, Options::kMaxSubsteps);
+      continue;
     }
+    // The next step is dt long, while the history's last interval is a substep dt / parts.
+    // Variable-step BDF2 is zero-stable only for step ratios below 1 + sqrt(2) (Grigorieff
+    // 1983), and 4 substeps leave a ratio of 4 (a ladder up to 16 substeps, tried: after the
+    // load jump at B of a 8193-node cycle h_min then swung 26 -> 24 -> 11 -> 23 nm over three
+    // steps, against 20 -> 34 -> 37 -> 36 nm with this history). So the history keeps the
+    // whole-step levels t_n - dt and t_n (and the one before): the next step is the uniform
+    // BDF2 step, still second order.
+    if (parts > 1 && saved_hist.levels >= 1) {
+      hist_.q3 = saved_hist.q2;
+      hist_.q2 = saved_hist.q1;
+      hist_.dt_prev2 = saved_hist.dt_prev;
+      hist_.dt_prev = dt;
+      hist_.levels = std::min(saved_hist.levels + 1, 3);
+      if (eff_.thermal) hist_.t_prev = saved_state.temperature.t_k;
+    }
+    break;
   }
   if (!sum.usable()) {
     hist_ = saved_hist;
@@ -181,15 +267,19 @@ LineContactSolver::Summary LineContactSolver::Impl::Step(const ContactConditions
 }
 
 LineContactSolver::TransientHistory LineContactSolver::Impl::SaveTransient() const {
-  return TransientHistory{hist_.levels,  hist_.q1,     hist_.q2,
-                          hist_.dt_prev, hist_.c_prev, hist_.t_prev};
+  return TransientHistory{hist_.levels,  hist_.q1,       hist_.q2,     hist_.q3,
+                          hist_.dt_prev, hist_.dt_prev2, hist_.c_prev, hist_.t_prev};
 }
 
 void LineContactSolver::Impl::RestoreTransient(const TransientHistory& h) {
   hist_.levels = h.levels;
   hist_.q1 = h.q1;
   hist_.q2 = h.q2;
+  hist_.q3 = h.q3;
   hist_.dt_prev = h.dt_prev_s;
+  hist_.dt_prev2 = h.dt_prev2_s;
+  // A history without its third level (or one of another size) estimates no error.
+  if (hist_.levels >= 3 && hist_.q3.size() != hist_.q1.size()) hist_.levels = 2;
   hist_.c_prev = h.c_prev;
   hist_.t_prev = h.t_prev_k;
 }

@@ -46,11 +46,9 @@ std::string ContactStepsCsv(const std::string& file, const std::vector<ContactSt
                              {"wall_time_s", {}}, {"spike_cells", {}}, {"inlet_deficit", {}}};
   // Columns added later go after the existing ones, before the text column (readers look
   // columns up by name; docs/results.md).
-  std::vector<Column> added = {{"t1_max_k", {}},
-                               {"t2_max_k", {}},
-                               {"dT_flash_blok_k", {}},
-                               {"steady_restart", {}},
-                               {"edge_cells", {}}};
+  std::vector<Column> added = {{"t1_max_k", {}},       {"t2_max_k", {}},   {"dT_flash_blok_k", {}},
+                               {"steady_restart", {}}, {"edge_cells", {}}, {"substeps", {}},
+                               {"time_error", {}}};
   for (const ContactStepRecord& s : steps) {
     const double row[] = {s.time_s,
                           s.load_n_per_m,
@@ -65,8 +63,13 @@ std::string ContactStepsCsv(const std::string& file, const std::vector<ContactSt
                           s.outlet_spike.found ? s.outlet_spike.width_cells : -1.0,
                           s.inlet.estimated ? s.inlet.film_deficit : -1.0};
     for (size_t j = 0; j < num.size(); ++j) num[j].values.push_back(row[j]);
-    const double later[] = {s.t1_max_k, s.t2_max_k, s.flash_rise_blok_k, s.restarted() ? 1.0 : 0.0,
-                            s.hertz_edge.width_m > 0 ? s.hertz_edge.width_cells : -1.0};
+    const double later[] = {s.t1_max_k,
+                            s.t2_max_k,
+                            s.flash_rise_blok_k,
+                            s.restarted() ? 1.0 : 0.0,
+                            s.hertz_edge.width_m > 0 ? s.hertz_edge.width_cells : -1.0,
+                            static_cast<double>(s.summary.substeps),
+                            s.summary.time_error};
     for (size_t j = 0; j < added.size(); ++j) added[j].values.push_back(later[j]);
   }
   CheckColumns(file, num);

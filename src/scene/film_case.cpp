@@ -106,6 +106,7 @@ FilmCase ReadFilmCase(Document& doc) {
   auto& o = f.options;
   o.upwind_order = static_cast<int>(doc.Int("numerics", "upwind_order"));
   o.time_scheme = TimeSchemeFromString(doc.String("numerics", "time_scheme"));
+  o.time_tolerance = doc.Real("numerics", "time_tolerance");
   o.linear_solver = LinearSolverKindFromString(doc.String("numerics", "linear_solver"));
   o.tolerance = doc.Real("numerics", "newton_tolerance");
   o.max_iterations = static_cast<int>(doc.Int("numerics", "max_newton_iterations"));

@@ -13,8 +13,8 @@
 namespace tehl::internal {
 namespace {
 
-constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '4'};
-constexpr char kRowsMagic[8] = {'T', 'E', 'H', 'L', 'R', 'O', 'W', '2'};
+constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '5'};
+constexpr char kRowsMagic[8] = {'T', 'E', 'H', 'L', 'R', 'O', 'W', '3'};
 constexpr std::int64_t kRowsHeaderBytes = sizeof kRowsMagic + sizeof(std::uint64_t);
 
 // The profile arrays of a result, in journal order.
@@ -142,7 +142,7 @@ void PutStep(Out& o, const MeshCycleStep& k) {
                 s.substeps, s.coupling_iterations})
     o.I(v);
   for (double v : {s.residual, s.load_error, s.wall_time_s, s.temperature_change_k,
-                   s.energy_balance_error})
+                   s.energy_balance_error, s.time_error})
     o.F(v);
   o.S(s.linear_solver);
   o.S(k.restart_reason);
@@ -164,7 +164,7 @@ MeshCycleStep GetStep(In& in) {
                  &s.krylov_iterations, &s.substeps, &s.coupling_iterations})
     *v = static_cast<int>(in.I());
   for (double* v : {&s.residual, &s.load_error, &s.wall_time_s, &s.temperature_change_k,
-                    &s.energy_balance_error})
+                    &s.energy_balance_error, &s.time_error})
     *v = in.F();
   s.linear_solver = in.S();
   k.restart_reason = in.S();
@@ -267,7 +267,9 @@ void CheckpointWriter::Write(std::uint64_t fingerprint,
   o.I(history.levels);
   o.V(history.q1);
   o.V(history.q2);
+  o.V(history.q3);
   o.F(history.dt_prev_s);
+  o.F(history.dt_prev2_s);
   PutConditions(o, history.c_prev);
   o.M(history.t_prev_k);
 
@@ -330,7 +332,9 @@ std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path) {
     c.history.levels = static_cast<int>(in.I());
     c.history.q1 = in.E();
     c.history.q2 = in.E();
+    c.history.q3 = in.E();
     c.history.dt_prev_s = in.F();
+    c.history.dt_prev2_s = in.F();
     c.history.c_prev = GetConditions(in);
     c.history.t_prev_k = in.M();
     if (!in.done() || c.journal_bytes < kRowsHeaderBytes) return std::nullopt;

@@ -177,7 +177,7 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
 
   std::vector<std::string> termination, message, restart_reason;
   std::vector<int> iterations, substeps, restarted;
-  std::vector<double> residual, wall, load_error;
+  std::vector<double> residual, wall, load_error, time_error;
   for (const auto& k : r.steps) {
     termination.push_back(ToString(k.summary.termination));
     message.push_back(k.summary.message);
@@ -188,6 +188,7 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
     residual.push_back(k.summary.residual);
     load_error.push_back(k.summary.load_error);
     wall.push_back(k.summary.wall_time_s);
+    time_error.push_back(k.summary.time_error);
   }
   h5.WriteStrings("/solver/termination", termination, "how each step's solve ended");
   h5.WriteStrings("/solver/message", message, "the solver's summary message per step");
@@ -201,6 +202,8 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
   h5.WriteVector("/solver/residual", residual, "-", "final scaled residual max-norm");
   h5.WriteVector("/solver/load_error", load_error, "-", "|integral p dx - w| / w");
   h5.WriteVector("/solver/wall_time", wall, "s", "wall time of each step's solve");
+  h5.WriteVector("/solver/time_error", time_error, "-",
+                 "estimated local time error of rho h per step, relative (-1: not estimated)");
   if (r.thermal) {
     std::vector<int> coupling;
     std::vector<double> change, balance;
@@ -244,6 +247,14 @@ void WriteMeshCycleCsv(const std::string& path, const MeshCycleResult& r) {
   std::vector<double> restarted;
   for (const MeshCycleStep& k : r.steps) restarted.push_back(k.restarted() ? 1.0 : 0.0);
   table.push_back({"steady_restart", restarted});
+  // The time substeps of each step and its estimated local time error (-1: not estimated).
+  std::vector<double> substeps, time_error;
+  for (const MeshCycleStep& k : r.steps) {
+    substeps.push_back(k.summary.substeps);
+    time_error.push_back(k.summary.time_error);
+  }
+  table.push_back({"substeps", substeps});
+  table.push_back({"time_error", time_error});
   WriteCsvTable(path, table);
 }
 

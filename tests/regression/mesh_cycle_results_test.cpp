@@ -154,7 +154,8 @@ TEST(MeshCycleResults, FileMatchesDocsResultsMd) {
   std::getline(csv, header);
   EXPECT_EQ(header,
             "s_m,t_s,R_m,u1_m_s,u2_m_s,um_m_s,SRR,w_n_per_m,w_static_n_per_m,h_min_m,h_c_m,"
-            "p_max_pa,mu,dT_flash_blok_k,C_RT,C_UT,C_WT,converged,steady_restart");
+            "p_max_pa,mu,dT_flash_blok_k,C_RT,C_UT,C_WT,converged,steady_restart,substeps,"
+            "time_error");
   int rows = 0;
   while (std::getline(csv, line)) ++rows;
   EXPECT_EQ(rows, 13);

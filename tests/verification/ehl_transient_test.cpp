@@ -87,8 +87,8 @@ TEST(TransientVerification, SuddenLoadDoublingConvergesAtEveryStepAndSettles) {
 // next whole step would then be a variable-step BDF2 step at the ratio `substeps` (4 after 4
 // substeps), beyond the zero-stability bound 1 + sqrt(2) of variable-step BDF2 (Grigorieff
 // 1983), which amplifies the substeps' errors (docs/theory.md, "Squeeze term"). The history
-// must keep the two whole-step levels instead: rho h at the start of the step as q2, dt as the
-// last interval.
+// must keep the whole-step levels instead: rho h at the start of the step as q2 (and the level
+// before it as q3), dt as the last interval.
 TEST(TransientVerification, AfterSubstepsTheHistoryKeepsTheWholeStepLevels) {
   // The steady film at a tenth of the load, then transient steps with a Newton budget of 15
   // iterations, and the whole load in one step (p_H 0.25 -> 0.8 GPa): in one piece that step
@@ -109,10 +109,13 @@ TEST(TransientVerification, AfterSubstepsTheHistoryKeepsTheWholeStepLevels) {
               jump.total_iterations);
   ASSERT_GT(jump.substeps, 1);
   const LineContactSolver::TransientHistory after = ms.solver.SaveTransient();
-  EXPECT_EQ(after.levels, 2);
+  EXPECT_EQ(after.levels, 3);
   EXPECT_EQ(after.dt_prev_s, dt);
+  EXPECT_EQ(after.dt_prev2_s, before.dt_prev_s);
   ASSERT_EQ(after.q2.size(), before.q1.size());
+  ASSERT_EQ(after.q3.size(), before.q2.size());
   EXPECT_EQ((after.q2 - before.q1).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ((after.q3 - before.q2).cwiseAbs().maxCoeff(), 0.0);
   // And the march goes on: the next whole steps converge.
   for (int k = 0; k < 3; ++k)
     EXPECT_TRUE(ms.solver.Step(kPoint.Conditions(1.0), dt, &st).usable()) << k;

@@ -97,6 +97,12 @@ class LineContactSolver {
                                       // point: docs/performance.md)
     int upwind_order = 2;             // Couette-term upwinding: 1 or 2 [-]
     TimeScheme time_scheme = TimeScheme::kBdf2;
+    // Transient steps: the largest local error of rho h a step may leave, relative (Milne's
+    // estimate, Summary::time_error). A converged step above it is done again in 2, 4, ... up
+    // to kMaxSubsteps substeps, as many as the error's order in dt says; 0 = substeps only
+    // where a step does not converge (docs/theory.md, "Time-step error") [-].
+    double time_tolerance = 0;
+    static constexpr int kMaxSubsteps = 64;
     double tolerance = 1e-8;          // stop when the scaled residual max-norm < this [-]
     int max_iterations = 100;         // Newton iterations per solve [-]
     int gmres_restart = 60;           // Krylov vectors before a restart [-]
@@ -178,6 +184,10 @@ class LineContactSolver {
     double wall_time_s = 0;         // [s]
     std::string linear_solver;      // "dense", "newton_krylov" or "reused_lu"
     int substeps = 1;               // time substeps a transient Step needed [-]
+    // Transient steps: the estimated local error of rho h, the largest over the step's
+    // substeps, relative to rho h (Options::time_tolerance); -1 where not estimated (the first
+    // two steps of BDF2, the first of BDF1, steady solves) [-].
+    double time_error = -1;
     std::vector<IterationRecord> history;
     // Thermal runs: pressure/energy coupling iterations, the last temperature change and the
     // energy balance error of the film (EnergyBalance::RelativeError) [-]; -1 where not
@@ -219,7 +229,8 @@ class LineContactSolver {
   // Step advances to state->time_s + dt with the conditions at the new time (BDF1 for the
   // first step, then the chosen scheme, variable steps allowed). A step that fails is
   // retried as 2 and then 4 substeps with linearly interpolated conditions (reported in the
-  // Summary); after substeps the history keeps the whole-step levels. With
+  // Summary), and with Options::time_tolerance > 0 a step whose estimated error is above it
+  // is done again in more substeps; after substeps the history keeps the whole-step levels. With
   // effects.transient off, Step is a steady solve at the new conditions (the surfaces still
   // move).
   void BeginTransient(const ContactConditions& c, const FilmState& initial);
@@ -230,8 +241,9 @@ class LineContactSolver {
   // continues as the original would (to the solver tolerance: factorizations are rebuilt).
   struct TransientHistory {
     int levels = 0;                // stored levels (0: BeginTransient not called) [-]
-    Eigen::VectorXd q1, q2;        // rho_e h at t_{n-1}, t_{n-2} [kg/m^2]
+    Eigen::VectorXd q1, q2, q3;    // rho_e h at t_{n-1}, t_{n-2}, t_{n-3} [kg/m^2]
     double dt_prev_s = 0;          // t_{n-1} - t_{n-2} [s]
+    double dt_prev2_s = 0;         // t_{n-2} - t_{n-3} [s]
     ContactConditions c_prev;      // conditions at t_{n-1}
     Eigen::MatrixXd t_prev_k;      // film temperature at t_{n-2}, n x nz (thermal) [K]
   };

@@ -264,6 +264,8 @@ TEST(ContactScene, IsothermalDiscRecordsTheInletTemperatureAndRollingFriction) {
                                          "dT_flash_blok_k",
                                          "steady_restart",
                                          "edge_cells",
+                                         "substeps",
+                                         "time_error",
                                          "termination"};
   EXPECT_EQ(steps.head, head);
   // Isothermal: the surfaces stay at the inlet temperature.
