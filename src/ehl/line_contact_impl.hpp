@@ -135,7 +135,10 @@ class LineContactSolver::Impl {
   // levels (the energy equation's old level stays the state's). Measured on the thermal
   // seed 004 cycle: fewer coupling iterations per step than starting from the last level.
   void ExtrapolateTemperature(double dt, const FilmState& s, FilmState* next) const;
-  Summary Step(const ContactConditions& c_new, double dt, FilmState* s);
+  Summary Step(const ContactConditions& c_new,
+               double dt,
+               FilmState* s,
+               const ContactConditions* c_start);
   double ResidualNorm(const ContactConditions& c, const FilmState& st);
   Eigen::VectorXd MassFlow(const ContactConditions& c, const FilmState& st);
   TransientHistory SaveTransient() const;

@@ -330,8 +330,9 @@ void LineContactSolver::BeginTransient(const ContactConditions& c, const FilmSta
 }
 LineContactSolver::Summary LineContactSolver::Step(const ContactConditions& c,
                                                    double dt,
-                                                   FilmState* state) {
-  Summary sum = impl_->Step(c, dt, state);
+                                                   FilmState* state,
+                                                   const ContactConditions* c_start) {
+  Summary sum = impl_->Step(c, dt, state, c_start);
   if (sum.usable()) state->solved_for = c;
   return sum;
 }

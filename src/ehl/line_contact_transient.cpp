@@ -169,7 +169,8 @@ void LineContactSolver::Impl::ExtrapolateTemperature(double dt,
 
 LineContactSolver::Summary LineContactSolver::Impl::Step(const ContactConditions& c_new,
                                                          double dt,
-                                                         FilmState* s) {
+                                                         FilmState* s,
+                                                         const ContactConditions* c_start) {
   const auto t0 = Clock::now();
   Summary sum;
   if (!(dt > 0) || !std::isfinite(dt)) {
@@ -195,7 +196,7 @@ LineContactSolver::Summary LineContactSolver::Impl::Step(const ContactConditions
   for (;;) {
     hist_ = saved_hist;
     *s = saved_state;
-    const ContactConditions c_old = hist_.c_prev;
+    const ContactConditions c_old = c_start ? *c_start : hist_.c_prev;
     bool ok = true;
     double error = -1;
     for (int k = 1; k <= parts && ok; ++k) {

@@ -361,8 +361,11 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
       c = conditions(st);
       // From the last converged level, across the skipped steps.
       const double dt = (s_steps[k] - s_steps[k - 1 - skipped]) / path.contact_speed_m_s();
-      internal::MarchedStep m =
-          internal::StepOrRestart(solver, c, dt, &state, film.steady_restart, film.skip_failed);
+      // Substeps go from the conditions just after the last level: where the load jumps
+      // there (B, D), the new load holds over the whole step.
+      const ContactConditions c_start = conditions(cycle.At(s_steps[k - 1 - skipped], false));
+      internal::MarchedStep m = internal::StepOrRestart(solver, c, dt, &state, film.steady_restart,
+                                                        film.skip_failed, &c_start);
       record(st, m.summary, std::move(m.restart_reason));
       if (m.skipped && ++skipped < internal::kMaxSkippedInARow && k + 1 < s_steps.size()) {
         internal::ResumeAfterSkip(solver, &m, &state);

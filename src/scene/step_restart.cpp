@@ -21,7 +21,8 @@ MarchedStep StepOrRestart(LineContactSolver& solver,
                           double dt_s,
                           FilmState* state,
                           bool steady_restart,
-                          bool skip) {
+                          bool skip,
+                          const ContactConditions* c_start) {
   std::optional<FilmState> before;
   LineContactSolver::TransientHistory history;
   if (steady_restart) {
@@ -30,7 +31,7 @@ MarchedStep StepOrRestart(LineContactSolver& solver,
   }
   const ContactConditions& c_prev = history.c_prev;  // the conditions before the step
   MarchedStep out;
-  out.summary = solver.Step(c, dt_s, state);
+  out.summary = solver.Step(c, dt_s, state, c_start);
   if (out.summary.usable() || !steady_restart) return out;
   // The steady film at the step's time: its surfaces moved on as the step would have moved
   // them (rough surfaces are sampled at their travel; LineContactSolver::Step's trapezoid).

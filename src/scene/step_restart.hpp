@@ -47,7 +47,8 @@ MarchedStep StepOrRestart(LineContactSolver& solver,
                           double dt_s,
                           FilmState* state,
                           bool steady_restart,
-                          bool skip = false);
+                          bool skip = false,
+                          const ContactConditions* c_start = nullptr);
 
 // After a skipped step has been recorded: the state and the solver history of the last
 // converged level again.

@@ -8,7 +8,8 @@
 //   (b) It is the local error: one step of 8 reference steps from the reference run's own
 //       levels misses the reference's rho h by what the estimate says.
 //   (c) After a sudden load rise the estimate asks for substeps, and the film at the end of the
-//       step is closer to the one of 64 substeps than the film of one step.
+//       step is closer to the one of 64 substeps than the film of one step; a load that jumps
+//       at the start of the step (Step's c_start) holds over all the substeps.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -137,9 +138,12 @@ TEST(TimeErrorEstimate, IsTheLocalErrorOfTheStep) {
   EXPECT_NEAR(step.time_error / actual, 1.0, 0.3);
 }
 
-// H_c at the end of one step of 2 t_b that raises the load from w0 to 1.5 w0, after three
-// steps at w0 from the steady film; *substeps and *error from that step's Summary.
-double LoadRiseHc(double time_tolerance, int* substeps, double* error) {
+// H_c at the end of a step of 2 t_b that raises the load from w0 to 1.5 w0, after three
+// steps at w0 from the steady film; *substeps and *error from that step's Summary. With
+// `jump`, the load is 1.5 w0 from the start of the step (Step's c_start), and `pieces` > 1
+// takes the step as that many steps of the solver at 1.5 w0 instead.
+double LoadRiseHc(
+    double time_tolerance, int* substeps, double* error, bool jump = false, int pieces = 1) {
   LineContactSolver::Options o;
   o.time_tolerance = time_tolerance;
   MoesSolver ms(kPoint, kNodes, o, /*transient=*/true);
@@ -152,8 +156,12 @@ double LoadRiseHc(double time_tolerance, int* substeps, double* error) {
     EXPECT_TRUE(sum.usable()) << sum.BriefReport();
     EXPECT_EQ(sum.substeps, 1) << "steady load, step " << k;
   }
-  const LineContactSolver::Summary sum = ms.solver.Step(kPoint.Conditions(1.5), dt, &st);
-  EXPECT_TRUE(sum.usable()) << sum.BriefReport();
+  const ContactConditions risen = kPoint.Conditions(1.5);
+  LineContactSolver::Summary sum;
+  for (int k = 0; k < pieces; ++k) {
+    sum = ms.solver.Step(risen, dt / pieces, &st, jump ? &risen : nullptr);
+    EXPECT_TRUE(sum.usable()) << sum.BriefReport();
+  }
   *substeps = sum.substeps;
   *error = sum.time_error;
   return ms.Hc(st);
@@ -177,6 +185,30 @@ TEST(TimeTolerance, SubstepsAfterALoadRiseBringTheFilmToTheFineStepOne) {
   EXPECT_GT(n_tol, 1);
   EXPECT_TRUE(e_tol <= tol || n_tol == LineContactSolver::Options::kMaxSubsteps) << e_tol;
   EXPECT_LT(std::abs(controlled - reference), 0.25 * std::abs(one - reference));
+}
+
+}  // namespace
+}  // namespace tehl
+
+namespace tehl {
+namespace {
+
+// A load that jumps at the start of a step (c_start) holds over all its substeps: 64
+// substeps equal 64 steps of a 64th at the new load, while substeps that ramp the load from
+// the last level's do not.
+TEST(TimeTolerance, SubstepsAfterAJumpHoldTheNewLoad) {
+  int n = 0;
+  double e = 0;
+  const double stepped = LoadRiseHc(0.0, &n, &e, /*jump=*/true, /*pieces=*/64);
+  const double jump = LoadRiseHc(1e-12, &n, &e, /*jump=*/true);
+  ASSERT_EQ(n, LineContactSolver::Options::kMaxSubsteps);
+  const double ramp = LoadRiseHc(1e-12, &n, &e, /*jump=*/false);
+  std::printf(
+      "H_c after the rise: %.10f (64 steps at 1.5 w0), %.10f (64 substeps from c_start), "
+      "%.10f (64 substeps, load ramped)\n",
+      stepped, jump, ramp);
+  EXPECT_NEAR(jump / stepped, 1.0, 1e-9);
+  EXPECT_GT(std::abs(ramp / stepped - 1.0), 1e-3);
 }
 
 }  // namespace

@@ -234,7 +234,13 @@ class LineContactSolver {
   // effects.transient off, Step is a steady solve at the new conditions (the surfaces still
   // move).
   void BeginTransient(const ContactConditions& c, const FilmState& initial);
-  Summary Step(const ContactConditions& c_new, double dt_s, FilmState* state);
+  // c_start: the conditions just after the current level where they jump there (the load
+  // at B and D of a mesh cycle); the step, and its substeps, then go from c_start to c_new
+  // instead of from the conditions of the last level.
+  Summary Step(const ContactConditions& c_new,
+               double dt_s,
+               FilmState* state,
+               const ContactConditions* c_start = nullptr);
 
   // The transient history (the stored levels of rho_e h, the last step and conditions), for
   // checkpoints: a solver restored with RestoreTransient and the state of the same time level
