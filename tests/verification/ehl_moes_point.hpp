@@ -34,6 +34,8 @@ struct MoesPoint {
   double um_m_s() const { return U() * e_prime_pa * radius_m / eta0_pa_s; }
   double load_n_per_m() const { return W() * e_prime_pa * radius_m; }
   HertzScales Hertz() const { return LineContactHertz(load_n_per_m(), radius_m, e_prime_pa); }
+  // The contact's transit time b / um [s], the time scale of transient films.
+  double TransitTime() const { return Hertz().half_width_m / um_m_s(); }
   // H_M = h / (R sqrt(2U)): h [m] = H_M * FilmScale().
   double FilmScale() const { return radius_m * std::sqrt(2.0 * U()); }
   double MoesHc() const { return MoesCentralFilm(M, L); }

@@ -28,8 +28,7 @@ using testing::MoesSolver;
 constexpr int kNodes = 257;
 const MoesPoint kPoint{20, 10};
 
-double TransitTime() { return kPoint.Hertz().half_width_m / kPoint.um_m_s(); }  // b/um [s]
-double Period() { return 8.0 * TransitTime(); }
+double Period() { return 8.0 * kPoint.TransitTime(); }
 double SineLoad(double t) { return 1.0 + 0.3 * std::sin(std::numbers::pi * t / Period()); }
 
 struct Level {
@@ -150,7 +149,7 @@ double LoadRiseHc(
   FilmState st;
   EXPECT_TRUE(ms.solver.SolveSteady(kPoint.Conditions(1.0), &st).usable());
   ms.solver.BeginTransient(kPoint.Conditions(1.0), st);
-  const double dt = 2.0 * TransitTime();
+  const double dt = 2.0 * kPoint.TransitTime();
   for (int k = 0; k < 3; ++k) {
     const LineContactSolver::Summary sum = ms.solver.Step(kPoint.Conditions(1.0), dt, &st);
     EXPECT_TRUE(sum.usable()) << sum.BriefReport();

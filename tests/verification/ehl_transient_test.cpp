@@ -28,7 +28,7 @@ using testing::MoesSolver;
 constexpr int kNodes = 257;
 const MoesPoint kPoint{20, 10};
 
-double TransitTime() { return kPoint.Hertz().half_width_m / kPoint.um_m_s(); }  // b/um [s]
+double TransitTime() { return kPoint.TransitTime(); }
 
 double SteadyHc(double load_factor) {
   MoesSolver ms(kPoint, kNodes);
