@@ -7,7 +7,8 @@ Runs (scenes expanded and checked by `tehl sweep --dry-run`, each run by `tehl r
 own process, N at a time):
   - the seed 004 SAE 40 mesh cycle, thermal with the Ree-Eyring film
     (cases/seed004_sae40.toml), one setting at a time around a base (257 nodes, 11 film
-    nodes, 80 steps, Newton tolerance 1e-8): grid N, film_nodes Nz, steps, newton_tolerance;
+    nodes, 80 steps, Newton tolerance 1e-8, no time-error control): grid N, film_nodes Nz,
+    steps, newton_tolerance, time_tolerance, the inlet end;
   - a steady thermal Ree-Eyring disc (cases/disc_steady.toml with sliding, SRR 0.4), the
     series N, Nz and newton_tolerance;
   - the cost of each effect on the cycle (129 nodes, 80 steps): isothermal, rigid, steady,
@@ -45,7 +46,8 @@ QUANTITIES = [("h_min", "h_min"), ("h_c", "h_c"), ("p_max", "p_max"), ("T_max", 
 CYCLE_BASE = {"effects.thermal": "true", "effects.non_newtonian": "true",
               "numerics.grid_points": "257",
               "numerics.film_nodes": "11", "numerics.steps": "80",
-              "numerics.newton_tolerance": "1e-8", "numerics.x_start_b": "-4.5"}
+              "numerics.newton_tolerance": "1e-8", "numerics.x_start_b": "-4.5",
+              "numerics.time_tolerance": "0"}
 DISC_BASE = {"contact.speed_1_m_s": "1.2", "contact.speed_2_m_s": "0.8",
              "effects.thermal": "true", "effects.non_newtonian": "true",
              "numerics.grid_points": "257", "numerics.film_nodes": "11",
@@ -70,6 +72,7 @@ SERIES = {
               ("Nz", "numerics.film_nodes", ["5", "7", "11", "21"]),
               ("steps", "numerics.steps", ["40", "80", "150", "300"]),
               ("tol", "numerics.newton_tolerance", ["1e-4", "1e-6", "1e-8", "1e-10"]),
+              ("time_tol", "numerics.time_tolerance", ["0", "1e-2", "1e-3", "1e-4"]),
               INLET],
     "disc": [("N", "numerics.grid_points", ["129", "257", "513", "1025"]),
              ("Nz", "numerics.film_nodes", ["5", "7", "11", "21"]),
@@ -371,7 +374,7 @@ def combinations(case_name, rows_by_series):
 
 def pareto_plot(data, path):
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
-    markers = {"N": "o", "Nz": "s", "steps": "^", "tol": "D", "inlet": "v"}
+    markers = {"N": "o", "Nz": "s", "steps": "^", "tol": "D", "inlet": "v", "time_tol": "P"}
     for ax, case_name in zip(axes, ["cycle", "disc"]):
         combos = sorted(combinations(case_name, data[case_name]))
         if combos:
@@ -510,7 +513,9 @@ def write_markdown(a, data, effects, elapsed, load_before, load_after):
     md.append("- **cycle**: `cases/seed004_sae40.toml` (seed 004 SAE 40, 10 kW, 1000 rpm) "
               "with `thermal = true` and the Ree-Eyring film (`non_newtonian = true`, "
               "tau0 = 5 MPa), the film model of the shipped studies; base 257 nodes, "
-              "`film_nodes` 11, 80 steps, `newton_tolerance` 1e-8. Quantities: min over the "
+              "`film_nodes` 11, 80 steps, `newton_tolerance` 1e-8, `time_tolerance` 0 (no "
+              "substeps for the time error; the series **time_tol** sets it: docs/case_format.md). "
+              "Quantities: min over the "
               "cycle of h_min, h_c at the pitch point, max of p_max, max of T_max, mean of mu.")
     md.append("- **disc**: `cases/disc_steady.toml` (steel discs, R = 10 mm, SAE 40, "
               "100 kN/m, p_H = 0.60 GPa) with sliding (u1 = 1.2, u2 = 0.8 m/s, SRR 0.4), "
