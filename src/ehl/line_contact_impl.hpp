@@ -117,9 +117,23 @@ class LineContactSolver::Impl {
   Eigen::VectorXd RhoH(const ContactConditions& c, FilmState s);
   void BeginTransient(const ContactConditions& c, const FilmState& s);
   internal::TimeDerivative Derivative(double dt) const;
-  // One step of dt to the conditions c; *time_error: the step's LocalTimeError (-1 when not
-  // estimated or not converged).
-  Summary OneStep(const ContactConditions& c, double dt, FilmState* s, double* time_error);
+  // A step's estimated local time error [-] (-1: not estimated) and its order in dt (3 for
+  // rho h under BDF2, 2 under BDF1 and for the temperature).
+  struct TimeError {
+    double value = -1;
+    double order = 3;
+  };
+  // One step of dt to the conditions c; *time_error: the larger of LocalTimeError and, in
+  // thermal runs, TemperatureTimeError (value -1 when not estimated or not converged).
+  Summary OneStep(const ContactConditions& c, double dt, FilmState* s, TimeError* time_error);
+  // Thermal runs: the local error of the film temperature (BDF1 in the energy equation) by
+  // Milne's device on the temperatures of the last two levels, T_n = t_n and hist_.t_prev:
+  // the root mean square over the film nodes of the loaded nodes, relative to the film's
+  // largest rise above the inlet temperature (at least 1 K) [-]; -1 without the levels.
+  double TemperatureTimeError(double dt,
+                              const Eigen::MatrixXd& t_n,
+                              const ContactConditions& c,
+                              const FilmState& next) const;
   // Milne's estimate of the local error of a step of dt that gave rho h = q and pressure p,
   // from the history before the step: the difference between q and the polynomial through
   // the last levels extrapolated to the new time (quadratic for BDF2, linear for BDF1), scaled

@@ -54,8 +54,8 @@ TimeDerivative LineContactSolver::Impl::Derivative(double dt) const {
 LineContactSolver::Summary LineContactSolver::Impl::OneStep(const ContactConditions& c,
                                                             double dt,
                                                             FilmState* s,
-                                                            double* time_error) {
-  *time_error = -1;
+                                                            TimeError* time_error) {
+  *time_error = TimeError{};
   FilmState next = *s;
   next.time_s = s->time_s + dt;
   next.travel1_m = s->travel1_m + 0.5 * dt * (hist_.c_prev.u1_m_s + c.u1_m_s);
@@ -65,10 +65,15 @@ LineContactSolver::Summary LineContactSolver::Impl::OneStep(const ContactConditi
   ExtrapolateTemperature(dt, *s, &next);
   Summary sum = SolveCoupled(c, td, s, eff_.transient ? dt : 0.0, &next);
   if (sum.usable()) {
-    if (eff_.thermal) hist_.t_prev = s->temperature.t_k;
-    *s = next;
     Eigen::VectorXd q = RhoH(c, next);
-    *time_error = LocalTimeError(dt, q, next.p_pa);
+    time_error->value = LocalTimeError(dt, q, next.p_pa);
+    time_error->order = opt_.time_scheme == TimeScheme::kBdf2 ? 3.0 : 2.0;
+    if (eff_.thermal) {
+      const double e = TemperatureTimeError(dt, s->temperature.t_k, c, next);
+      if (e > time_error->value) *time_error = TimeError{e, 2.0};
+      hist_.t_prev = s->temperature.t_k;
+    }
+    *s = next;
     hist_.q3 = std::move(hist_.q2);
     hist_.q2 = std::move(hist_.q1);
     hist_.q1 = std::move(q);
@@ -78,6 +83,33 @@ LineContactSolver::Summary LineContactSolver::Impl::OneStep(const ContactConditi
     hist_.c_prev = c;
   }
   return sum;
+}
+
+double LineContactSolver::Impl::TemperatureTimeError(double dt,
+                                                     const Eigen::MatrixXd& t_n,
+                                                     const ContactConditions& c,
+                                                     const FilmState& next) const {
+  const Eigen::MatrixXd& t = next.temperature.t_k;
+  const Eigen::MatrixXd& t_prev = hist_.t_prev;
+  const double h1 = hist_.dt_prev;
+  if (!eff_.transient || !(h1 > 0) || t_prev.size() == 0 || t_prev.rows() != t.rows() ||
+      t_prev.cols() != t.cols() || t_n.rows() != t.rows() || t_n.cols() != t.cols())
+    return -1;
+  // The energy equation's transient term is BDF1: 1/3 of T - (linear extrapolation) for
+  // equal steps, as for rho h with BDF1 (LocalTimeError).
+  const double scale = dt / (2 * dt + h1);
+  const double rise = std::max(t.maxCoeff() - c.temperature_k, 1.0);
+  double sum = 0;
+  int count = 0;
+  for (int i = 1; i + 1 < t.rows(); ++i) {
+    if (!(next.p_pa[i] > 0)) continue;
+    for (int j = 0; j < t.cols(); ++j) {
+      const double predicted = t_n(i, j) + (dt / h1) * (t_n(i, j) - t_prev(i, j));
+      sum += std::pow(t(i, j) - predicted, 2);
+      ++count;
+    }
+  }
+  return count ? scale * std::sqrt(sum / count) / rise : -1;
 }
 
 double LineContactSolver::Impl::LocalTimeError(double dt,
@@ -181,8 +213,6 @@ LineContactSolver::Summary LineContactSolver::Impl::Step(const ContactConditions
   const History saved_hist = hist_;
   const FilmState saved_state = *s;
   const double tolerance = eff_.transient ? opt_.time_tolerance : 0.0;
-  // The estimate's order in dt (BDF2 dt^3, BDF1 dt^2), for the substeps it asks for.
-  const double order = opt_.time_scheme == TimeScheme::kBdf2 ? 3.0 : 2.0;
   int total = 0, krylov = 0, failures = 0;
   int parts = 1;
   // The last attempt that converged but missed the time tolerance: the step's answer if
@@ -199,6 +229,7 @@ LineContactSolver::Summary LineContactSolver::Impl::Step(const ContactConditions
     const ContactConditions c_old = c_start ? *c_start : hist_.c_prev;
     bool ok = true;
     double error = -1;
+    double order = 2;  // of the largest estimate in dt, for the substeps it asks for
     for (int k = 1; k <= parts && ok; ++k) {
       const double f = static_cast<double>(k) / parts;
       ContactConditions ck = c_new;
@@ -208,9 +239,12 @@ LineContactSolver::Summary LineContactSolver::Impl::Step(const ContactConditions
       ck.u2_m_s = c_old.u2_m_s + f * (c_new.u2_m_s - c_old.u2_m_s);
       ck.load_n_per_m = c_old.load_n_per_m + f * (c_new.load_n_per_m - c_old.load_n_per_m);
       ck.temperature_k = c_old.temperature_k + f * (c_new.temperature_k - c_old.temperature_k);
-      double e = -1;
+      TimeError e;
       sum = OneStep(ck, dt / parts, s, &e);
-      error = std::max(error, e);
+      if (e.value > error) {
+        error = e.value;
+        order = e.order;
+      }
       total += sum.total_iterations;
       krylov += sum.krylov_iterations;
       ok = sum.usable();

@@ -158,9 +158,10 @@ SectionSpec NumericsSection() {
                   2.0),
           Text("time_scheme", "\"bdf2\"", "time discretization of d(rho h)/dt", {"bdf1", "bdf2"}),
           Real("time_tolerance", "-", "0",
-               "largest estimated local error of rho h per time step, relative; a step above "
-               "it is done again in up to 64 substeps (docs/theory.md); 0 = substeps only "
-               "where a step does not converge",
+               "largest estimated local error per time step of rho h, relative (thermal runs: "
+               "and of the film temperature, relative to its rise); a step above it is done "
+               "again in up to 64 substeps (docs/theory.md); 0 = substeps only where a step "
+               "does not converge",
                0.0, 1.0),
           Text("linear_solver", "\"auto\"", "Newton linear solver",
                {"auto", "dense", "newton_krylov", "reused_lu"}),

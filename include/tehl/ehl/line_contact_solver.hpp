@@ -184,8 +184,9 @@ class LineContactSolver {
     double wall_time_s = 0;         // [s]
     std::string linear_solver;      // "dense", "newton_krylov" or "reused_lu"
     int substeps = 1;               // time substeps a transient Step needed [-]
-    // Transient steps: the estimated local error of rho h, the largest over the step's
-    // substeps, relative to rho h (Options::time_tolerance); -1 where not estimated (the first
+    // Transient steps: the estimated local error of rho h relative to rho h (in thermal runs
+    // the larger of that and the film temperature's error relative to its rise), the largest
+    // over the step's substeps (Options::time_tolerance); -1 where not estimated (the first
     // two steps of BDF2, the first of BDF1, steady solves) [-].
     double time_error = -1;
     std::vector<IterationRecord> history;
