@@ -104,6 +104,30 @@ void NoteRestarts(const std::vector<Step>& steps, Where where) {
       count, steps.size() - 1, list.c_str(), first.c_str());
 }
 
+// A step whose estimated local time error (Summary::time_error) is above this is noted: its
+// film is that many parts of itself away from the film of a step resolved in time (after the
+// load jumps of a gear cycle a time error of 1e-2 leaves h_min and h_c several per cent off:
+// docs/case_format.md, "time_tolerance") [-].
+inline constexpr double kTimeErrorNote = 1e-2;
+
+// The converged steps whose estimated time error is above kTimeErrorNote: how many, the
+// largest and where (`where(k, step)` names step k), and the key that controls it.
+template <typename Step, typename Where>
+void NoteTimeError(const std::vector<Step>& steps, Where where) {
+  size_t count = 0, worst = 0;
+  for (size_t k = 0; k < steps.size(); ++k) {
+    if (!steps[k].summary.usable() || !(steps[k].summary.time_error > kTimeErrorNote)) continue;
+    if (count++ == 0 || steps[k].summary.time_error > steps[worst].summary.time_error) worst = k;
+  }
+  if (count == 0) return;
+  std::printf(
+      "note: %zu of %zu time steps have an estimated local time error above %g %% (largest "
+      "%.2g at %s); [numerics] time_tolerance splits such steps into substeps until their "
+      "estimate is below it (docs/case_format.md: what it costs, and where it helps)\n",
+      count, steps.size() - 1, 100 * kTimeErrorNote, steps[worst].summary.time_error,
+      where(worst, steps[worst]).c_str());
+}
+
 // On stderr: the steps that did not converge (the one where the run stopped, and those left
 // behind with failed_step = "steady_restart_or_skip") and why the first one failed.
 template <typename Step, typename Where>

@@ -110,6 +110,7 @@ class LineContactSolver::Impl {
     Eigen::VectorXd q1, q2, q3;  // rho h at t_{n-1}, t_{n-2}, t_{n-3}
     double dt_prev = 0;        // t_{n-1} - t_{n-2}
     double dt_prev2 = 0;       // t_{n-2} - t_{n-3}
+    double h_next = 0;         // time-error control: the next substep's proposed size (0: none)
     ContactConditions c_prev;  // conditions at t_{n-1}
     Eigen::MatrixXd t_prev;    // film temperature at t_{n-2} (thermal; empty before) [K]
   };
@@ -153,6 +154,22 @@ class LineContactSolver::Impl {
                double dt,
                FilmState* s,
                const ContactConditions* c_start);
+  // The conditions a fraction f of the way from a to b (linear in each).
+  static ContactConditions Interpolate(const ContactConditions& a,
+                                       const ContactConditions& b,
+                                       double f);
+  // Step without time-error control: one piece, and 2 and then 4 equal substeps where it does
+  // not converge; after substeps the history keeps the whole-step levels.
+  Summary SubstepLadder(const ContactConditions& c_new,
+                        double dt,
+                        FilmState* s,
+                        const ContactConditions* c_start);
+  // Step under time-error control (Options::time_tolerance > 0): substeps sized by the local
+  // error estimate (line_contact_adaptive_step.cpp).
+  Summary AdaptiveStep(const ContactConditions& c_new,
+                       double dt,
+                       FilmState* s,
+                       const ContactConditions* c_start);
   double ResidualNorm(const ContactConditions& c, const FilmState& st);
   Eigen::VectorXd MassFlow(const ContactConditions& c, const FilmState& st);
   TransientHistory SaveTransient() const;

@@ -92,8 +92,9 @@ double LineContactSolver::Impl::TemperatureTimeError(double dt,
   const Eigen::MatrixXd& t = next.temperature.t_k;
   const Eigen::MatrixXd& t_prev = hist_.t_prev;
   const double h1 = hist_.dt_prev;
-  if (!eff_.transient || !(h1 > 0) || t_prev.size() == 0 || t_prev.rows() != t.rows() ||
-      t_prev.cols() != t.cols() || t_n.rows() != t.rows() || t_n.cols() != t.cols())
+  if (!eff_.transient || hist_.levels < 2 || !(h1 > 0) || t_prev.size() == 0 ||
+      t_prev.rows() != t.rows() || t_prev.cols() != t.cols() || t_n.rows() != t.rows() ||
+      t_n.cols() != t.cols())
     return -1;
   // The energy equation's transient term is BDF1: 1/3 of T - (linear extrapolation) for
   // equal steps, as for rho h with BDF1 (LocalTimeError).
@@ -210,70 +211,50 @@ LineContactSolver::Summary LineContactSolver::Impl::Step(const ContactConditions
     return sum;
   }
   if (hist_.levels == 0) BeginTransient(c_new, *s);
+  if (eff_.transient && opt_.time_tolerance > 0) {
+    sum = AdaptiveStep(c_new, dt, s, c_start);
+  } else {
+    sum = SubstepLadder(c_new, dt, s, c_start);
+  }
+  sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  return sum;
+}
+
+ContactConditions LineContactSolver::Impl::Interpolate(const ContactConditions& a,
+                                                       const ContactConditions& b,
+                                                       double f) {
+  ContactConditions c = b;
+  c.reduced_radius_m = a.reduced_radius_m + f * (b.reduced_radius_m - a.reduced_radius_m);
+  c.u1_m_s = a.u1_m_s + f * (b.u1_m_s - a.u1_m_s);
+  c.u2_m_s = a.u2_m_s + f * (b.u2_m_s - a.u2_m_s);
+  c.load_n_per_m = a.load_n_per_m + f * (b.load_n_per_m - a.load_n_per_m);
+  c.temperature_k = a.temperature_k + f * (b.temperature_k - a.temperature_k);
+  return c;
+}
+
+LineContactSolver::Summary LineContactSolver::Impl::SubstepLadder(
+    const ContactConditions& c_new, double dt, FilmState* s, const ContactConditions* c_start) {
+  Summary sum;
   const History saved_hist = hist_;
   const FilmState saved_state = *s;
-  const double tolerance = eff_.transient ? opt_.time_tolerance : 0.0;
-  int total = 0, krylov = 0, failures = 0;
-  int parts = 1;
-  // The last attempt that converged but missed the time tolerance: the step's answer if
-  // every attempt with more substeps fails to converge.
-  struct Attempt {
-    History hist;
-    FilmState state;
-    Summary sum;
-  };
-  std::optional<Attempt> converged;
-  for (;;) {
+  int total = 0, krylov = 0;
+  for (int parts : {1, 2, 4}) {
     hist_ = saved_hist;
     *s = saved_state;
     const ContactConditions c_old = c_start ? *c_start : hist_.c_prev;
     bool ok = true;
     double error = -1;
-    double order = 2;  // of the largest estimate in dt, for the substeps it asks for
     for (int k = 1; k <= parts && ok; ++k) {
-      const double f = static_cast<double>(k) / parts;
-      ContactConditions ck = c_new;
-      ck.reduced_radius_m =
-          c_old.reduced_radius_m + f * (c_new.reduced_radius_m - c_old.reduced_radius_m);
-      ck.u1_m_s = c_old.u1_m_s + f * (c_new.u1_m_s - c_old.u1_m_s);
-      ck.u2_m_s = c_old.u2_m_s + f * (c_new.u2_m_s - c_old.u2_m_s);
-      ck.load_n_per_m = c_old.load_n_per_m + f * (c_new.load_n_per_m - c_old.load_n_per_m);
-      ck.temperature_k = c_old.temperature_k + f * (c_new.temperature_k - c_old.temperature_k);
       TimeError e;
-      sum = OneStep(ck, dt / parts, s, &e);
-      if (e.value > error) {
-        error = e.value;
-        order = e.order;
-      }
+      sum = OneStep(Interpolate(c_old, c_new, static_cast<double>(k) / parts), dt / parts, s, &e);
+      error = std::max(error, e.value);
       total += sum.total_iterations;
       krylov += sum.krylov_iterations;
       ok = sum.usable();
     }
     sum.substeps = parts;
     sum.time_error = ok ? error : -1;
-    if (!ok) {
-      // Not converged: twice the substeps, twice at most (1, 2, 4 without error control).
-      if (failures == 2 || parts >= Options::kMaxSubsteps) {
-        if (!converged) break;
-        hist_ = std::move(converged->hist);
-        *s = std::move(converged->state);
-        sum = std::move(converged->sum);
-        parts = sum.substeps;
-      } else {
-        ++failures;
-        parts *= 2;
-        continue;
-      }
-    } else if (tolerance > 0 && error > tolerance && parts < Options::kMaxSubsteps) {
-      // The error falls as (dt / parts)^order: the next power of two that should meet the
-      // tolerance, at least twice the substeps.
-      converged = Attempt{hist_, *s, sum};
-      const double want = parts * std::pow(error / tolerance, 1.0 / order);
-      int next = 2 * parts;
-      while (next < want && next < Options::kMaxSubsteps) next *= 2;
-      parts = std::min(next, Options::kMaxSubsteps);
-      continue;
-    }
+    if (!ok) continue;
     // The next step is dt long, while the history's last interval is a substep dt / parts.
     // Variable-step BDF2 is zero-stable only for step ratios below 1 + sqrt(2) (Grigorieff
     // 1983), and 4 substeps leave a ratio of 4 (a ladder up to 16 substeps, tried: after the
@@ -291,19 +272,16 @@ LineContactSolver::Summary LineContactSolver::Impl::Step(const ContactConditions
     }
     break;
   }
-  if (!sum.usable()) {
-    hist_ = saved_hist;
-    // Keep the best iterate of the last attempt (finite by construction).
-  }
+  // On failure the state keeps the best iterate of the last attempt (finite by construction).
+  if (!sum.usable()) hist_ = saved_hist;
   sum.total_iterations = total;
   sum.krylov_iterations = krylov;
-  sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
   return sum;
 }
 
 LineContactSolver::TransientHistory LineContactSolver::Impl::SaveTransient() const {
-  return TransientHistory{hist_.levels,  hist_.q1,       hist_.q2,     hist_.q3,
-                          hist_.dt_prev, hist_.dt_prev2, hist_.c_prev, hist_.t_prev};
+  return TransientHistory{hist_.levels,   hist_.q1,     hist_.q2,     hist_.q3,    hist_.dt_prev,
+                          hist_.dt_prev2, hist_.h_next, hist_.c_prev, hist_.t_prev};
 }
 
 void LineContactSolver::Impl::RestoreTransient(const TransientHistory& h) {
@@ -313,6 +291,7 @@ void LineContactSolver::Impl::RestoreTransient(const TransientHistory& h) {
   hist_.q3 = h.q3;
   hist_.dt_prev = h.dt_prev_s;
   hist_.dt_prev2 = h.dt_prev2_s;
+  hist_.h_next = h.next_substep_s;
   // A history without its third level (or one of another size) estimates no error.
   if (hist_.levels >= 3 && hist_.q3.size() != hist_.q1.size()) hist_.levels = 2;
   hist_.c_prev = h.c_prev;

@@ -16,6 +16,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/reused_lu_solver.cpp
   src/ehl/line_contact_solver.cpp
   src/ehl/line_contact_pressure.cpp
+  src/ehl/line_contact_adaptive_step.cpp
   src/ehl/line_contact_transient.cpp
   src/ehl/line_contact_coupling.cpp
   src/ehl/elastic_deflection.cpp

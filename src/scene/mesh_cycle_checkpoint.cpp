@@ -13,7 +13,7 @@
 namespace tehl::internal {
 namespace {
 
-constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '5'};
+constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '6'};
 constexpr char kRowsMagic[8] = {'T', 'E', 'H', 'L', 'R', 'O', 'W', '3'};
 constexpr std::int64_t kRowsHeaderBytes = sizeof kRowsMagic + sizeof(std::uint64_t);
 
@@ -270,6 +270,7 @@ void CheckpointWriter::Write(std::uint64_t fingerprint,
   o.V(history.q3);
   o.F(history.dt_prev_s);
   o.F(history.dt_prev2_s);
+  o.F(history.next_substep_s);
   PutConditions(o, history.c_prev);
   o.M(history.t_prev_k);
 
@@ -335,6 +336,7 @@ std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path) {
     c.history.q3 = in.E();
     c.history.dt_prev_s = in.F();
     c.history.dt_prev2_s = in.F();
+    c.history.next_substep_s = in.F();
     c.history.c_prev = GetConditions(in);
     c.history.t_prev_k = in.M();
     if (!in.done() || c.journal_bytes < kRowsHeaderBytes) return std::nullopt;

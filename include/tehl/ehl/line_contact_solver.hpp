@@ -97,12 +97,12 @@ class LineContactSolver {
                                       // point: docs/performance.md)
     int upwind_order = 2;             // Couette-term upwinding: 1 or 2 [-]
     TimeScheme time_scheme = TimeScheme::kBdf2;
-    // Transient steps: the largest local error of rho h a step may leave, relative (Milne's
-    // estimate, Summary::time_error). A converged step above it is done again in 2, 4, ... up
-    // to kMaxSubsteps substeps, as many as the error's order in dt says; 0 = substeps only
-    // where a step does not converge (docs/theory.md, "Time-step error") [-].
+    // Transient steps: the largest local error a substep may leave, relative (Milne's
+    // estimate, Summary::time_error). With it > 0 each step is integrated in substeps sized by
+    // the estimate (at most twice the one before, at least 1/4096 of the step); 0 = one piece,
+    // and 2 or 4 substeps only where a step does not converge (docs/theory.md, "Time-step
+    // error") [-].
     double time_tolerance = 0;
-    static constexpr int kMaxSubsteps = 64;
     double tolerance = 1e-8;          // stop when the scaled residual max-norm < this [-]
     int max_iterations = 100;         // Newton iterations per solve [-]
     int gmres_restart = 60;           // Krylov vectors before a restart [-]
@@ -251,6 +251,7 @@ class LineContactSolver {
     Eigen::VectorXd q1, q2, q3;    // rho_e h at t_{n-1}, t_{n-2}, t_{n-3} [kg/m^2]
     double dt_prev_s = 0;          // t_{n-1} - t_{n-2} [s]
     double dt_prev2_s = 0;         // t_{n-2} - t_{n-3} [s]
+    double next_substep_s = 0;     // time-error control: the next substep's size (0: none) [s]
     ContactConditions c_prev;      // conditions at t_{n-1}
     Eigen::MatrixXd t_prev_k;      // film temperature at t_{n-2}, n x nz (thermal) [K]
   };
