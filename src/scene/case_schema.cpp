@@ -158,9 +158,9 @@ SectionSpec NumericsSection() {
                   2.0),
           Text("time_scheme", "\"bdf2\"", "time discretization of d(rho h)/dt", {"bdf1", "bdf2"}),
           Real("time_tolerance", "-", "0",
-               "largest estimated local error per time step of rho h, relative (thermal runs: "
-               "and of the film temperature, relative to its rise); a step above it is done "
-               "again in up to 64 substeps (docs/theory.md); 0 = substeps only where a step "
+               "largest estimated local time error of rho h per substep, relative (thermal runs: "
+               "and of the film temperature, relative to its rise); > 0: each step is taken in "
+               "substeps sized by it (docs/theory.md); 0 = one piece, substeps only where a step "
                "does not converge",
                0.0, 1.0),
           Text("linear_solver", "\"auto\"", "Newton linear solver",
