@@ -58,6 +58,13 @@ bool StillConverging(const std::vector<double>& change, double tolerance, int ca
 }  // namespace
 
 FilmFriction LineContactSolver::Impl::Friction(const ContactConditions& c, const FilmState& st) {
+  // A state that is not a film of this grid (e.g. that of a first solve that failed) has no
+  // friction: NaN, never a read past its end.
+  if (st.p_pa.size() != grid_.size()) {
+    FilmFriction none;
+    none.coefficient = std::numeric_limits<double>::quiet_NaN();
+    return none;
+  }
   FilmState s = st;
   Film(c, &s);
   if (field_) {

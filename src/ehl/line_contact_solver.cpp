@@ -74,9 +74,12 @@ double FilmState::MinFilm() const {
   Eigen::Index i;
   const double hmin = h_m.minCoeff(&i);
   if (i == 0 || i == h_m.size() - 1) return hmin;
-  // The parabola through the smallest node and its neighbours: h_min between nodes.
+  // The parabola through the smallest node and its neighbours: h_min between nodes. A
+  // parabola that dips below zero between positive nodes (a film a few nm thin at a sharp
+  // asperity) is not resolved by the grid: the smallest node is the answer then.
   const double a = h_m[i - 1], b = h_m[i + 1], curv = a - 2 * hmin + b;
-  return curv > 0 ? hmin - (b - a) * (b - a) / (8 * curv) : hmin;
+  const double vertex = curv > 0 ? hmin - (b - a) * (b - a) / (8 * curv) : hmin;
+  return vertex >= 0 || hmin < 0 ? vertex : hmin;
 }
 double FilmState::MaxPressure() const { return p_pa.size() ? p_pa.maxCoeff() : 0.0; }
 double FilmState::CentralFilm(const UniformGrid& g) const {

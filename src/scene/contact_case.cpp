@@ -42,6 +42,28 @@ ContactInputs ReadContact(Document& doc) {
                   "speeds with u1 + u2 > 0 at every time");
       break;
     }
+  // The surface temperatures of thermal runs are those of heat sources moving with each
+  // surface into the contact (seed 004 eqs. 14-15; Jaeger's moving line source with
+  // finite_peclet): a surface at rest, or moving out of the contact, has none.
+  if (doc.Bool("effects", "thermal")) {
+    const bool tables = in.steps > 0;
+    const char* keys[2][2] = {{"speed_1_m_s", "speed_1_table_m_s"},
+                              {"speed_2_m_s", "speed_2_table_m_s"}};
+    const std::vector<double>* speeds[2] = {&in.u1, &in.u2};
+    for (int j = 0; j < 2; ++j) {
+      const auto slow =
+          std::find_if(speeds[j]->begin(), speeds[j]->end(), [](double u) { return !(u > 0); });
+      if (slow == speeds[j]->end()) continue;
+      const bool table_key = tables && doc.Given("contact", keys[j][1]);
+      doc.Problem("contact", keys[j][table_key ? 1 : 0],
+                  "a thermal run needs both surfaces moving into the contact: the surface "
+                  "temperatures are those of heat sources moving with each surface (seed 004 "
+                  "eqs. 14-15), and a surface at " +
+                      std::string(*slow == 0 ? "rest" : "a negative speed") + " (" +
+                      FormatShort(*slow) + " m/s) has none",
+                  "speeds > 0 at every time, or [effects] thermal = false");
+    }
+  }
   const char* load_key = doc.Given("contact", "load_table_n_per_m") && in.steps > 0
                              ? "load_table_n_per_m"
                              : "load_n_per_m";

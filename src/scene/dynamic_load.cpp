@@ -5,7 +5,10 @@
 #include <cstdio>
 
 #include "tehl/error.hpp"
+#include "tehl/gear/load_sharing.hpp"
+#include "tehl/gear/operating_point.hpp"
 #include "tehl/gear/path_of_contact.hpp"
+#include "tehl/gear/tip_relief.hpp"
 
 namespace tehl::internal {
 
@@ -81,6 +84,46 @@ double DynamicLoad::LoadFactorAt(double s, bool left) const {
   return share0 > 0 ? d.force_n * mesh_->ShareAt(s, left, d.x_m) / (share0 * f0) : 1.0;
 }
 
+namespace {
+
+// With tip relief the mesh force may stay positive while the tracked pair lifts off: at the
+// dynamic approach its relieved flank can clear. The loaded path keeps its static load above
+// kMinFilmShare of F_bt; its dynamic load must stay above zero, or there is no film to solve
+// (a light film in between is solved as any other). Sampled as the mesh cycle samples its
+// path (400 intervals, both one-sided limits).
+bool RelievedPairStaysLoaded(Document& doc, const GearCase& c, const DynamicLoad& load) {
+  const PathOfContact path(*c.pair, c.operating.pinion_speed_rad_s);
+  const double force = NominalToothLoad(*c.pair, c.operating).normal_force_n;
+  const double g = path.length_m(), nudge = 1e-9 * g;
+  const double begin = c.loaded_path.begin_m, end = c.loaded_path.end_m;
+  double min_share = 1, s_min = begin;
+  for (int i = 0; i <= 400; ++i) {
+    const double s = begin + (end - begin) * i / 400;
+    for (bool left : {true, false}) {
+      const double q = left ? std::max(s - nudge, 0.0) : std::min(s + nudge, g);
+      const double share = RelievedLoadShare(path, q, c.pair_stiffness, c.tip_relief, force).share *
+                           load.LoadFactorAt(s, left);
+      if (!(share >= min_share)) {
+        min_share = share;
+        s_min = s;
+      }
+    }
+  }
+  if (min_share > 0) return true;
+  char rule[320];
+  std::snprintf(rule, sizeof rule,
+                "with tip relief the tracked pair lifts off under the vibration: its dynamic "
+                "load falls to zero at s = %.4g mm from A (F_bt = %.4g N), and a film cannot "
+                "carry zero load",
+                1e3 * s_min, force);
+  doc.Problem("effects", "dynamic_load", rule,
+              "a smaller tip_relief_m, a larger [dynamics] damping_ratio, another speed (tehl "
+              "dynamics CASE --speeds shows the dynamic factor), or dynamic_load = false");
+  return false;
+}
+
+}  // namespace
+
 std::shared_ptr<const DynamicLoad> MakeDynamicLoad(Document& doc, const GearCase& c) {
   if (!c.pair || !c.pair_stiffness) return nullptr;
   const DynamicsCase d = ReadDynamicsCase(doc, c);
@@ -104,6 +147,7 @@ std::shared_ptr<const DynamicLoad> MakeDynamicLoad(Document& doc, const GearCase
                 "shows where), or dynamic_load = false");
     return nullptr;
   }
+  if (c.tip_relief.Active() && !RelievedPairStaysLoaded(doc, c, *load)) return nullptr;
   return load;
 }
 

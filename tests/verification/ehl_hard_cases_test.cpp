@@ -5,6 +5,7 @@
 // condition). Invalid conditions are reported as kInvalidInput, never thrown, never NaN.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -118,6 +119,13 @@ TEST(HardCasesVerification, InvalidConditionsAreReportedNotThrown) {
       EXPECT_TRUE(st.p_pa.allFinite() && st.h_m.allFinite()) << b.what;
       EXPECT_EQ(st.p_pa.size(), before.p_pa.size());
       if (with_guess) EXPECT_EQ((st.p_pa - before.p_pa).cwiseAbs().maxCoeff(), 0.0);
+      // The friction of what is left: the guess's, or NaN for the empty state (no read past
+      // its end: a mesh cycle records the friction of every step, failed or not).
+      const FilmFriction f = ms.solver.Friction(good, st);
+      if (with_guess)
+        EXPECT_TRUE(std::isfinite(f.coefficient)) << b.what;
+      else
+        EXPECT_TRUE(std::isnan(f.coefficient)) << b.what;
     }
   }
 }

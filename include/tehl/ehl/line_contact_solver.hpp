@@ -83,7 +83,8 @@ struct FilmState {
   // Hertz similarity when the contact's outlet moves by more than a grid cell.
   std::optional<ContactConditions> solved_for;
   bool valid() const { return p_pa.size() > 0 && p_pa.size() == h_m.size(); }
-  double MinFilm() const;      // h_min, parabola through the smallest node [m]
+  double MinFilm() const;  // h_min, parabola through the smallest node (that node if the
+                           // parabola dips below zero between positive nodes) [m]
   double CentralFilm(const UniformGrid& g) const;  // h at x = 0 (interpolated) [m]
   double MaxPressure() const;  // p_max [Pa]
 };
@@ -265,7 +266,8 @@ class LineContactSolver {
   Eigen::VectorXd MassFlow(const ContactConditions& c, const FilmState& state) const;
 
   // Friction of a solved state (its temperature field when thermal, else the inlet
-  // temperature; Ree-Eyring when effects.non_newtonian).
+  // temperature; Ree-Eyring when effects.non_newtonian). A state whose pressure is not of
+  // this grid (e.g. empty) gives coefficient NaN and zero tractions.
   FilmFriction Friction(const ContactConditions& c, const FilmState& state) const;
 
  private:
