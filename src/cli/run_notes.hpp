@@ -4,6 +4,7 @@
 // Private to src/cli.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdio>
 #include <string>
@@ -126,6 +127,34 @@ void NoteTimeError(const std::vector<Step>& steps, Where where) {
       "estimate is below it (docs/case_format.md: what it costs, and where it helps)\n",
       count, steps.size() - 1, 100 * kTimeErrorNote, steps[worst].summary.time_error,
       where(worst, steps[worst]).c_str());
+}
+
+// A film thinner than this is a few molecular layers thick: the boundary films that
+// lubricant additives form on steel are tens of nm thick (Spikes 2004, Tribol. Lett. 17:469,
+// on ZDDP films), so below it the surfaces' asperities and those films carry load that the
+// continuum Reynolds film does not describe, and its friction there (the shear of a
+// nanometre film) is not physical. tehl models no asperity contact [m].
+inline constexpr double kThinFilmNote = 10e-9;
+
+// The converged steps whose h_min is below kThinFilmNote: how many, the thinnest and where
+// (`where(k, step)` names step k), and the largest friction coefficient among them.
+template <typename Step, typename Where>
+void NoteThinFilms(const std::vector<Step>& steps, Where where) {
+  size_t count = 0, thinnest = 0;
+  double mu = 0;
+  for (size_t k = 0; k < steps.size(); ++k) {
+    if (!steps[k].summary.usable() || !(steps[k].h_min_m < kThinFilmNote)) continue;
+    if (count++ == 0 || steps[k].h_min_m < steps[thinnest].h_min_m) thinnest = k;
+    mu = std::max(mu, steps[k].friction_coefficient);
+  }
+  if (count == 0) return;
+  std::printf(
+      "note: in %zu of %zu films h_min is below %g nm (thinnest %.3g nm at %s): the surfaces "
+      "are in asperity (mixed) contact, which tehl does not model; the continuum film there, "
+      "and its friction (up to mu = %.3g), describe no real contact (rougher surfaces need "
+      "a thicker film: lower load, higher speed or a more viscous oil)\n",
+      count, steps.size(), 1e9 * kThinFilmNote, 1e9 * steps[thinnest].h_min_m,
+      where(thinnest, steps[thinnest]).c_str(), mu);
 }
 
 // On stderr: the steps that did not converge (the one where the run stopped, and those left

@@ -242,5 +242,31 @@ TEST(RunNotes, ALargeTimeErrorIsNotedUnlessControlled) {
   EXPECT_EQ(c.out.find("local time error"), std::string::npos) << c.out;
 }
 
+// The disc of DiscCase in rolling at 1 mm/s instead of 4.881 m/s: its film (h_c 2.05 um at
+// 4.881 m/s, docs/thermal.md "Open points") thins as u^0.7 (Dowson-Higginson) to about
+// 2.05 um x (1e-3 / 4.881)^0.7 = 5 nm, below the 10 nm of the thin-film note; at 4.881 m/s
+// there is no note.
+TEST(RunNotes, AFilmOfAFewNanometresIsNotedAsAsperityContact) {
+  auto disc = [](const char* speed) {
+    const std::string path = UniqueTempPath("thin.toml");
+    std::ofstream(path) << "[contact]\nradius_1_m = 0.04\nradius_2_m = 0.04\nspeed_1_m_s = "
+                        << speed << "\nspeed_2_m_s = " << speed
+                        << "\nload_n_per_m = 355238.0\n[lubricant]\nname = \"sae40\"\n"
+                           "[effects]\ntransient = false\n[numerics]\ngrid_points = 513\n"
+                           "[output]\ndirectory = \""
+                        << UniqueTempPath("out") << "\"\n";
+    return path;
+  };
+  const RunResult thin = RunTehl("run -q '" + disc("0.001") + "'");
+  ASSERT_TRUE(thin.exited);
+  ASSERT_EQ(thin.exit_code, 0) << thin.out << thin.err;
+  EXPECT_NE(thin.out.find("note: in 1 of 1 films h_min is below 10 nm"), std::string::npos)
+      << thin.out;
+  EXPECT_NE(thin.out.find("asperity (mixed) contact"), std::string::npos) << thin.out;
+  const RunResult thick = RunTehl("run -q '" + disc("4.881") + "'");
+  ASSERT_EQ(thick.exit_code, 0) << thick.out << thick.err;
+  EXPECT_EQ(thick.out.find("h_min is below"), std::string::npos) << thick.out;
+}
+
 }  // namespace
 }  // namespace tehl::testing
