@@ -123,7 +123,7 @@ int RunContact(const RunArgs& a) {
   if (last.summary.usable()) {
     NoteContactSpike(last.outlet_spike);
     NoteContactEdge(last.hertz_edge);
-    NoteContactInlet(last.inlet, r.x_start_b);
+    NoteContactInlet(last.inlet, r.x_start_b, r.x_start_m);
   }
   NoteContactPeclet(r);
   NoteNewtonianFriction(r, [](size_t k, const ContactStepRecord& s) {

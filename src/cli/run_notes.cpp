@@ -196,11 +196,35 @@ constexpr double kInletNoteDeficit = 0.005;
 constexpr double kInletTargetDeficit = 0.002;
 constexpr const char* kInletAdvice = "with grid_points raised in proportion (same spacing)";
 
-void NoteContactInlet(const InletTruncation& t, double x_start_b) {
+// A nearly isoviscous film (alpha p_max < kGrubinMinAlphaP) gets no Grubin estimate; its
+// inlet is noted when it starts downstream of -l_iso (InletTruncation::short_isoviscous_inlet).
+void PrintIsoviscousInletNote(const InletTruncation& t,
+                              double x_start_b,
+                              double x0_m,
+                              const std::string& where) {
+  std::printf(
+      "note: %s is nearly isoviscous (alpha p_max = %.2g, below the %g at which the inlet's "
+      "effect can be estimated) and such a film builds its pressure far upstream: its inlet at "
+      "x_start_b = %.3g (%.3g mm) reaches %.2g %% of the %.3g mm over which a flooded "
+      "isoviscous film does (Martin), so it is likely much too thin; a longer inlet "
+      "([numerics] x_start_b = %.3g %s%s)\n",
+      where.c_str(), t.alpha_p_max, kGrubinMinAlphaP, x_start_b, -1e3 * x0_m,
+      100 * -x0_m / t.isoviscous_inlet_m, 1e3 * t.isoviscous_inlet_m,
+      x_start_b * t.isoviscous_inlet_m / -x0_m, kInletAdvice,
+      where == "the film" ? "; or leave out grid_points and x_start_b: a [contact] case's "
+                            "automatic grid reaches it"
+                          : "");
+}
+
+void NoteContactInlet(const InletTruncation& t, double x_start_b, double x0_m) {
+  if (!t.estimated && t.short_isoviscous_inlet) {
+    PrintIsoviscousInletNote(t, x_start_b, x0_m, "the film");
+    return;
+  }
   if (!t.estimated || t.film_deficit <= kInletNoteDeficit) return;
   std::printf(
       "note: the inlet at x_start_b = %.3g cuts off %.3g MPa of inlet pressure: the film is "
-      "about %.2g %% thinner than with an unbounded inlet (Grubin estimate, docs/results.md); "
+      "about %.3g %% thinner than with an unbounded inlet (Grubin estimate, docs/results.md); "
       "[numerics] x_start_b = %.3g %s brings that to about %.2g %%\n",
       x_start_b, t.missing_pressure_pa * 1e-6, 100 * t.film_deficit,
       t.InletFor(x_start_b, kInletTargetDeficit), kInletAdvice, 100 * kInletTargetDeficit);
@@ -208,6 +232,21 @@ void NoteContactInlet(const InletTruncation& t, double x_start_b) {
 
 void NoteCycleInlet(const MeshCycleResult& r) {
   const std::vector<InletTruncation> inlet = r.InletTruncations();
+  size_t short_count = 0, shortest = inlet.size();
+  for (size_t k = 0; k < r.steps.size() && k < inlet.size(); ++k) {
+    if (!Usable(r, k) || inlet[k].estimated || !inlet[k].short_isoviscous_inlet) continue;
+    ++short_count;
+    if (shortest == inlet.size() ||
+        inlet[k].isoviscous_inlet_m > inlet[shortest].isoviscous_inlet_m)
+      shortest = k;
+  }
+  if (short_count > 0 && !r.x_m.empty()) {
+    char where[128];
+    std::snprintf(where, sizeof where,
+                  "in %zu of the %zu films (the worst at s = %.4g mm) the film", short_count,
+                  UsableSteps(r), r.steps[shortest].s_m * 1e3);
+    PrintIsoviscousInletNote(inlet[shortest], r.x_start_b, r.x_m.front(), where);
+  }
   size_t worst = inlet.size();
   for (size_t k = 0; k < r.steps.size() && k < inlet.size(); ++k)
     if (Usable(r, k) && inlet[k].estimated &&
@@ -223,7 +262,7 @@ void NoteCycleInlet(const MeshCycleResult& r) {
     at_pitch = buf;
   }
   std::printf(
-      "note: the inlet at x_start_b = %.3g thins the films by up to %.2g %% against an "
+      "note: the inlet at x_start_b = %.3g thins the films by up to %.3g %% against an "
       "unbounded inlet (at s = %.4g mm%s; Grubin estimate, docs/results.md): [numerics] "
       "x_start_b = %.3g %s brings that to about %.2g %%\n",
       r.x_start_b, 100 * inlet[worst].film_deficit, r.steps[worst].s_m * 1e3, at_pitch.c_str(),

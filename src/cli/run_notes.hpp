@@ -48,8 +48,10 @@ void NoteCycleSpikes(const MeshCycleResult& r);
 void NoteContactEdge(const HertzEdge& e);
 void NoteCycleEdges(const MeshCycleResult& r);
 
-// Notes an inlet that thins the film by more than kInletNoteDeficit (one film; a cycle).
-void NoteContactInlet(const InletTruncation& t, double x_start_b);
+// Notes an inlet that thins the film by more than kInletNoteDeficit, or one shorter than a
+// nearly isoviscous film needs (InletTruncation::short_isoviscous_inlet), with x0 the grid's
+// first node [m] (one film; a cycle).
+void NoteContactInlet(const InletTruncation& t, double x_start_b, double x0_m);
 void NoteCycleInlet(const MeshCycleResult& r);
 
 // `format` with k and value, e.g. Where("step %zu (s = %.4g mm)", 70, 4.913).

@@ -1,5 +1,6 @@
 #include "tehl/ehl/inlet_truncation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tehl {
@@ -14,6 +15,14 @@ double HertzSeparation(double x, double b, double r) {
 
 }  // namespace
 
+double IsoviscousInletLength(double r, double b, double um, double eta, double w) {
+  if (!(r > 0) || !(um > 0) || !(eta > 0) || !(w > 0) || !(b >= 0)) return 0.0;
+  const double h_martin = 4.896 * eta * um * r / w;  // Martin 1916 (VALIDATION.md section 2)
+  const double weight = b > 0 ? std::min(1.0, h_martin * r / (b * b)) : 1.0;
+  return std::min(kIsoviscousInletLengths * std::sqrt(2.0 * r * h_martin) * weight,
+                  kIsoviscousInletMaxRadii * r);
+}
+
 double InletTruncation::InletFor(double x0, double target) const {
   if (!estimated || !(film_deficit > 0) || !(target > 0)) return x0;
   return x0 * std::cbrt(film_deficit / target);
@@ -26,11 +35,17 @@ InletTruncation EstimateInletTruncation(const Eigen::VectorXd& p_pa,
   const Eigen::Index n = p_pa.size();
   const double eta = in.inlet_viscosity_pa_s, um = in.um_m_s, r = in.reduced_radius_m;
   const double x0 = in.x_start_m, b = in.half_width_m;
-  if (n < 3 || h_m.size() != n || !(in.pressure_viscosity_per_pa > 0) || !(eta > 0) || !(um > 0) ||
+  if (n < 3 || h_m.size() != n || !(in.pressure_viscosity_per_pa >= 0) || !(eta > 0) || !(um > 0) ||
       !(r > 0) || !(in.dx_m > 0) || !(x0 < 0) || (b > 0 && -x0 <= b))
     return out;
   const double h0 = h_m[0];
   if (!std::isfinite(h0) || !(h0 > 0) || !p_pa.head(3).allFinite()) return out;
+  out.alpha_p_max = in.pressure_viscosity_per_pa * p_pa.maxCoeff();
+  if (!(out.alpha_p_max >= kGrubinMinAlphaP)) {
+    out.isoviscous_inlet_m = IsoviscousInletLength(r, b, um, eta, in.load_n_per_m);
+    out.short_isoviscous_inlet = -x0 < out.isoviscous_inlet_m;
+    return out;
+  }
   // h* from the flux at x0 (p = 0 there, so eta and rho are the inlet's): q / (rho um) =
   // h - h^3/(12 eta um) dp/dx, dp/dx one-sided to second order.
   const double dpdx = (-3.0 * p_pa[0] + 4.0 * p_pa[1] - p_pa[2]) / (2.0 * in.dx_m);

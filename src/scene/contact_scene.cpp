@@ -71,6 +71,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   };
   ContactRunResult result;
   result.x_start_b = film.x_start_b;
+  result.x_start_m = grid.x_start_m();
   result.grid_points = grid.size();
   result.grid_rule = plan.rule;
   result.inlet_temperature_k = film.inlet_temperature_k;
@@ -104,7 +105,9 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
         film.effects.elastic ? LineContactHertz(c.load_n_per_m, r, in.e_prime).half_width_m : 0.0;
     inlet.um_m_s = c.um();
     inlet.inlet_viscosity_pa_s = inlet_law.eta_pa_s;
-    inlet.pressure_viscosity_per_pa = inlet_law.deta_dp / inlet_law.eta_pa_s;
+    inlet.pressure_viscosity_per_pa =
+        film.effects.piezoviscous ? inlet_law.deta_dp / inlet_law.eta_pa_s : 0.0;
+    inlet.load_n_per_m = c.load_n_per_m;
     rec.inlet = EstimateInletTruncation(state.p_pa, state.h_m, inlet);
     rec.hertz_edge = EstimateHertzEdge(r, inlet.half_width_m, rec.h_c_m, grid.dx_m());
     // The same quantities as the mesh cycle's /cycle/T_max and /cycle/mu (mesh_cycle_scene.cpp).

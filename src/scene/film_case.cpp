@@ -1,9 +1,11 @@
 #include "scene/film_case.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
 #include "scene/case_reader.hpp"
+#include "tehl/ehl/inlet_truncation.hpp"
 #include "tehl/error.hpp"
 
 namespace tehl::internal {
@@ -36,13 +38,26 @@ std::shared_ptr<const SurfaceShape> ReadSurface(Document& doc, const std::string
 
 }  // namespace
 
-GridUnits GridUnitsFor(const FilmCase& film, double b_m, double r_m, double um_m_s,
-                       double w_n_per_m) {
-  if (film.effects.elastic || !film.lubricant) return {b_m, b_m};
+GridUnits GridUnitsFor(const FilmCase& film,
+                       double b_m,
+                       double r_m,
+                       double um_m_s,
+                       double w_n_per_m,
+                       bool isoviscous_inlet) {
+  if (!film.lubricant || (film.effects.elastic && !isoviscous_inlet)) return {b_m, b_m};
   const double eta0 = film.lubricant->viscosity().Evaluate(0.0, film.inlet_temperature_k).eta_pa_s;
-  const double h0 = 4.896 * eta0 * um_m_s * r_m / w_n_per_m;  // Martin [m]
-  const double l = std::sqrt(2.0 * r_m * h0);
-  return {kRigidInletUnit * l, kRigidOutletUnit * l};
+  if (!film.effects.elastic) {
+    const double h0 = 4.896 * eta0 * um_m_s * r_m / w_n_per_m;  // Martin [m]
+    const double l = std::sqrt(2.0 * r_m * h0);
+    return {kRigidInletUnit * l, kRigidOutletUnit * l};
+  }
+  // Elastic films: b, unless the film is nearly rigid (h_M R / b^2 ~ 1/M^2 not small): its
+  // inlet reaches -l_iso at the default x_start_b (IsoviscousInletLength,
+  // include/tehl/ehl/inlet_truncation.hpp: the rigid film's 40 sqrt(2 R h_M) weighted by that
+  // ratio, at most R/2), its outlet as far as the rigid film's in proportion.
+  const double l_iso = IsoviscousInletLength(r_m, b_m, um_m_s, eta0, w_n_per_m);
+  const double unit = kRigidInletUnit * l_iso / kIsoviscousInletLengths;
+  return {std::max(b_m, unit), std::max(b_m, unit * kRigidOutletUnit / kRigidInletUnit)};
 }
 
 ContactSolids ReadContactSolids(const Document& doc) {

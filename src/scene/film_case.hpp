@@ -52,8 +52,16 @@ struct GridUnits {
 };
 inline constexpr double kRigidInletUnit = 40.0 / 4.5;   // inlet unit / l [-]
 inline constexpr double kRigidOutletUnit = 2.0 / 1.5;   // outlet unit / l [-]
-GridUnits GridUnitsFor(const FilmCase& film, double b_m, double r_m, double um_m_s,
-                       double w_n_per_m);
+// Elastic films whose Martin film is not small against b^2/R (light loads, Moes' M ~ 1 or
+// below) are nearly rigid: with `isoviscous_inlet` their inlet unit grows to the rigid one
+// weighted by that ratio (IsoviscousInletLength, include/tehl/ehl/inlet_truncation.hpp), so
+// that the default inlet reaches where such a film builds its pressure.
+GridUnits GridUnitsFor(const FilmCase& film,
+                       double b_m,
+                       double r_m,
+                       double um_m_s,
+                       double w_n_per_m,
+                       bool isoviscous_inlet = true);
 
 // Reads [lubricant], [effects], [numerics] and [surfaces]; problems go into `doc`.
 // Effects this version cannot simulate yet are problems at their key, never ignored.

@@ -76,8 +76,11 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
       const double b =
           LineContactHertz(st.load_n_per_m, st.contact.reduced_radius_m, e_prime_pa).half_width_m;
       plan.max_half_width_m = std::max(plan.max_half_width_m, b);
+      // One grid serves the whole path: no film's isoviscous inlet stretches it (the lightly
+      // loaded ends of a relieved path, or a dip of the dynamic load, would stretch the grid of
+      // every film); `tehl run` notes films whose inlet is short (docs/results.md).
       units = units.Max(GridUnitsFor(film, b, st.contact.reduced_radius_m, st.contact.um_m_s,
-                                     st.load_n_per_m));
+                                     st.load_n_per_m, /*isoviscous_inlet=*/false));
       choice.Add(st.contact.reduced_radius_m, st.contact.um_m_s, st.load_n_per_m);
       if (left && i > 0)
         transits += st.contact.um_m_s / b * (path.duration_s() * (end - begin) / g / samples);

@@ -76,6 +76,7 @@ std::vector<InletTruncation> MeshCycleResult::InletTruncations() const {
     in.um_m_s = st.um_m_s;
     in.inlet_viscosity_pa_s = inlet_viscosity_pa_s;
     in.pressure_viscosity_per_pa = pressure_viscosity_per_pa;
+    in.load_n_per_m = st.load_n_per_m;
     out.push_back(EstimateInletTruncation(
         Eigen::Map<const Eigen::VectorXd>(p_pa[k].data(),
                                           static_cast<Eigen::Index>(p_pa[k].size())),
@@ -237,7 +238,7 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   r.inlet_temperature_k = film.inlet_temperature_k;
   const ViscosityValue inlet = internal::InletViscosity(film);
   r.inlet_viscosity_pa_s = inlet.eta_pa_s;
-  r.pressure_viscosity_per_pa = inlet.deta_dp / inlet.eta_pa_s;
+  r.pressure_viscosity_per_pa = film.effects.piezoviscous ? inlet.deta_dp / inlet.eta_pa_s : 0.0;
   r.thermal = film.effects.thermal;
   r.non_newtonian = film.effects.non_newtonian;
   r.finite_peclet = film.effects.finite_peclet;

@@ -15,7 +15,19 @@
 // alpha = d ln(eta)/dp at the inlet state. Measured against longer inlets (isothermal steel
 // discs, SAE 40, 0.4-1.2 GPa, 0.2-5 m/s; tests/verification/inlet_truncation_disc_test.cpp,
 // docs/results.md "The inlet note"): the estimate of the h_c deficit is 0.96-1.17 times the
-// measured one. p_in falls like |x0|^-3, and so does the deficit.
+// measured one (films with alpha p_max >= 8). p_in falls like |x0|^-3, and so does the
+// deficit.
+//
+// Grubin's argument needs a piezoviscous film, whose pressure reaches several 1/alpha: below
+// alpha p_max = kGrubinMinAlphaP there is no estimate. Such a film (light load, nearly
+// isoviscous) builds its pressure far upstream, as a rigid isoviscous one (Martin) does over
+// tens of sqrt(2 R h_M), h_M = 4.896 eta0 um R / w: its inlet needs
+//   l_iso = min(kIsoviscousInletLengths sqrt(2 R h_M) min(1, h_M R / b^2), R / 2),
+// the weight fading as elasticity takes over (h_M R / b^2 ~ 1/M^2, Moes' load parameter M);
+// beyond R/2 the gap is no longer the parabola x^2/(2R) (7 % off there) and a real inlet is
+// wherever the oil meets the gap, which a flooded inlet does not describe,
+// and `short_isoviscous_inlet` says when the grid starts downstream of -l_iso. (The automatic
+// grid of case files starts there: scene/film_case.cpp.)
 #pragma once
 
 #include <Eigen/Core>
@@ -30,6 +42,8 @@ struct InletTruncationInputs {
   double um_m_s = 0;                     // entrainment speed (u1 + u2)/2 [m/s]
   double inlet_viscosity_pa_s = 0;       // eta at p = 0 and the inlet temperature [Pa s]
   double pressure_viscosity_per_pa = 0;  // alpha = d ln(eta)/dp there [1/Pa]
+  double load_n_per_m = 0;               // w, for the isoviscous inlet length; 0 = unknown
+                                         //   [N/m]
 };
 
 struct InletTruncation {
@@ -37,6 +51,10 @@ struct InletTruncation {
                                    //   zone, reverse or no entrainment, a non-finite film)
   double missing_pressure_pa = 0;  // p_in, the pressure at x0 on an unbounded inlet [Pa]
   double film_deficit = 0;         // 1 - h_truncated / h_unbounded [-]
+  double alpha_p_max = 0;          // alpha p_max of the film: no estimate below
+                                   //   kGrubinMinAlphaP [-]
+  double isoviscous_inlet_m = 0;   // l_iso (above); 0 when unknown [m]
+  bool short_isoviscous_inlet = false;  // alpha p_max < kGrubinMinAlphaP and -x0 < l_iso
   // The inlet x0' (same units as x0) at which the deficit would be `target`: p_in ~ |x0|^-3.
   double InletFor(double x0, double target) const;
 };
@@ -48,5 +66,19 @@ InletTruncation EstimateInletTruncation(const Eigen::VectorXd& p_pa,
 
 // Grubin's exponent of the film on alpha eta0 um (H ~ (G U)^(8/11)) [-].
 constexpr double kGrubinExponent = 8.0 / 11.0;
+// The smallest alpha p_max for which the estimate is given [-].
+constexpr double kGrubinMinAlphaP = 5.0;
+// The inlet of a rigid isoviscous film in sqrt(2 R h_M) (Martin): at -40 of them the dry gap
+// is 1600 h_M [-].
+constexpr double kIsoviscousInletLengths = 40.0;
+// ... and at most this many R [-].
+constexpr double kIsoviscousInletMaxRadii = 0.5;
+
+// l_iso above for a film of half-width b (0: rigid) [m]; 0 when an input is not positive.
+double IsoviscousInletLength(double reduced_radius_m,
+                             double half_width_m,
+                             double um_m_s,
+                             double inlet_viscosity_pa_s,
+                             double load_n_per_m);
 
 }  // namespace tehl

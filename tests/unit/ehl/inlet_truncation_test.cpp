@@ -16,14 +16,16 @@ constexpr double kAlpha = 2e-8;  // pressure-viscosity coefficient [1/Pa]
 constexpr double kDx = 1e-6;     // node spacing [m]
 
 // A film whose first three nodes carry p = 0, g dx, 2 g dx (so dp/dx = g at x0 exactly) and
-// h0 at x0 (the rest is not read).
+// h0 at x0, with a peak p_peak downstream (alpha p_peak = 10 by default: a piezoviscous film;
+// the rest is not read).
 struct Film {
   Eigen::VectorXd p, h;
-  Film(double h0, double g) : p(8), h(8) {
+  Film(double h0, double g, double p_peak = 10 / kAlpha) : p(8), h(8) {
     for (int i = 0; i < 8; ++i) {
       p[i] = g * kDx * i;
       h[i] = h0;
     }
+    p[7] = p_peak;
   }
 };
 
@@ -115,6 +117,36 @@ TEST(InletTruncation, NoEstimateWhereTheArgumentDoesNotHold) {
   EXPECT_FALSE(EstimateInletTruncation(f.p, f.h, in).estimated);
   Film bad(std::nan(""), 1e9);
   EXPECT_FALSE(EstimateInletTruncation(bad.p, bad.h, Inputs(-4.5e-4, 1e-4)).estimated);
+}
+
+// A nearly isoviscous film (alpha p_max = 0.5, below kGrubinMinAlphaP): no Grubin estimate,
+// but a note when its inlet is shorter than l_iso. Martin's film h_M = 4.896 eta um R / w
+// (VALIDATION.md section 2) with w = 1000 N/m: h_M = 9.792 um, sqrt(2 R h_M) = 0.44254 mm.
+TEST(InletTruncation, ANearlyIsoviscousFilmIsFlaggedWhenItsInletIsShort) {
+  const double w = 1000;
+  const Film f(10e-6, 1e9, 0.5 / kAlpha);
+  InletTruncationInputs in = Inputs(-4.5e-4, 1e-5);
+  in.load_n_per_m = w;
+  InletTruncation t = EstimateInletTruncation(f.p, f.h, in);
+  EXPECT_FALSE(t.estimated);
+  EXPECT_NEAR(t.alpha_p_max, 0.5, 1e-12);
+  // b = 10 um: h_M R / b^2 = 979 > 1, so l_iso = 40 sqrt(2 R h_M) = 17.7 mm, above R/2 = 5 mm.
+  EXPECT_NEAR(t.isoviscous_inlet_m, kIsoviscousInletMaxRadii * kR, 1e-15);
+  EXPECT_TRUE(t.short_isoviscous_inlet);
+  in.x_start_m = -0.5 * kR;
+  EXPECT_FALSE(EstimateInletTruncation(f.p, f.h, in).short_isoviscous_inlet);
+  // The same film piezoviscous (alpha p_max = 10): estimated, never flagged.
+  const Film g(10e-6, 1e9);
+  t = EstimateInletTruncation(g.p, g.h, Inputs(-4.5e-4, 1e-5));
+  EXPECT_TRUE(t.estimated);
+  EXPECT_FALSE(t.short_isoviscous_inlet);
+  // l_iso: the rigid film's 40 l (b = 0), weighted by h_M R / b^2 when that is below 1; at
+  // w = 1e5 N/m, h_M = 97.92 nm and 40 l = 1.770 mm, below R/2.
+  const double w2 = 1e5, h2 = 4.896 * kEta * kUm * kR / w2, l2 = std::sqrt(2 * kR * h2);
+  EXPECT_NEAR(IsoviscousInletLength(kR, 0.0, kUm, kEta, w2), 40 * l2, 1e-15);
+  const double b = 2 * std::sqrt(h2 * kR);  // h_M R / b^2 = 1/4
+  EXPECT_NEAR(IsoviscousInletLength(kR, b, kUm, kEta, w2), 40 * l2 / 4, 1e-15);
+  EXPECT_EQ(IsoviscousInletLength(kR, b, kUm, kEta, 0.0), 0.0);
 }
 
 }  // namespace

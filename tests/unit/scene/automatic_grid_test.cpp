@@ -95,6 +95,22 @@ TEST(AutomaticGrid, ARigidFilmGetsTheSmallestGrid) {
   EXPECT_NE(r.grid_rule.find("rigid"), std::string::npos) << r.grid_rule;
 }
 
+// A light load (694 N/m, p_H = 50 MPa, b = 8.8 um) at 1 m/s: Martin's rigid film h_M =
+// 4.896 eta0 um R / w = 8.05 um (VALIDATION.md section 2, eta0 = 0.1140574 Pa s) is a
+// thousand times b^2/R, so the film is nearly rigid and builds its pressure over millimetres.
+// The grid's inlet then reaches R/2 instead of -4.5 b = -40 um, and the film is Martin's
+// within 3 % (its elastic deflection and piezoviscosity, alpha p_max = 0.03, are small); on
+// -4.5 b it was 0.31 um. An explicit, short inlet is noted (tests/unit/cli/run_notes_test.cpp).
+TEST(AutomaticGrid, ANearlyRigidLightFilmGetsAnInletLongEnoughForMartinsFilm) {
+  const double load = 694.0, speed = 1.0, r = 0.01, eta0 = 0.1140574;
+  const ContactRunResult film = RunDisc(Disc("light", load, speed, ""));
+  ASSERT_TRUE(film.converged());
+  EXPECT_NEAR(film.x_start_m, -0.5 * r, 1e-9);
+  const double martin = 4.896 * eta0 * speed * r / load;
+  EXPECT_NEAR(film.steps.back().h_min_m / martin, 1.0, 0.03);
+  EXPECT_FALSE(film.steps.back().inlet.short_isoviscous_inlet);
+}
+
 // `tehl case --check` tells what a run would solve on before it runs: the heavy disc above gets
 // the grid the run gets, with its rule; a given count is reported as given.
 TEST(AutomaticGrid, CaseCheckReportsTheGridARunWouldUse) {
