@@ -236,9 +236,13 @@ KeySpec Text(std::string name, std::string def, std::string meaning,
   return k;
 }
 
-KeySpec Reals(std::string name, std::string unit, std::string def, std::string meaning,
-              std::optional<double> min) {
-  KeySpec k = Real(std::move(name), std::move(unit), std::move(def), std::move(meaning), min);
+KeySpec Reals(std::string name,
+              std::string unit,
+              std::string def,
+              std::string meaning,
+              std::optional<double> min,
+              std::optional<double> max) {
+  KeySpec k = Real(std::move(name), std::move(unit), std::move(def), std::move(meaning), min, max);
   k.kind = ValueKind::kDoubleArray;
   return k;
 }
@@ -484,17 +488,28 @@ Document Document::ReadString(const Schema& schema, const std::string& text,
 }
 
 Document Document::ReadFile(const Schema& schema, const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  // Only regular files, and only up to kMaxInputFileBytes: a device such as /dev/zero or a
+  // FIFO would be read without end.
   std::error_code ec;
-  const bool folder = std::filesystem::is_directory(path, ec);
-  if (!in || folder) {
+  const auto status = std::filesystem::status(path, ec);
+  const bool folder = std::filesystem::is_directory(status);
+  const bool regular = std::filesystem::is_regular_file(status);
+  const auto bytes = regular ? std::filesystem::file_size(path, ec) : 0;
+  std::ifstream in;
+  if (regular && !ec && bytes <= kMaxInputFileBytes) in.open(path, std::ios::binary);
+  if (!in.is_open() || !in) {
     Document doc;
     doc.schema_ = &schema;
     doc.path_ = path;
-    doc.problems_.Add({path, 0, "(file)", "",
-                       folder ? "is a folder, not a " + schema.kind + " file"
-                              : "cannot open the " + schema.kind + " file",
-                       "an existing, readable file"});
+    std::string what = "cannot open the " + schema.kind + " file";
+    if (folder)
+      what = "is a folder, not a " + schema.kind + " file";
+    else if (std::filesystem::exists(status) && !regular)
+      what = "is not a regular file (a device, FIFO or socket), not a " + schema.kind + " file";
+    else if (regular && bytes > kMaxInputFileBytes)
+      what = "is " + std::to_string(bytes) + " bytes long, more than any " + schema.kind +
+             " file (" + std::to_string(kMaxInputFileBytes) + ")";
+    doc.problems_.Add({path, 0, "(file)", "", what, "an existing, readable file"});
     return doc;
   }
   std::ostringstream text;

@@ -8,6 +8,7 @@
 // Private to src/: toml11 stays out of the public headers.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -52,6 +53,9 @@ struct Schema {
 };
 
 // Builders that keep schema tables short and readable.
+// The longest input file read (case, lubricant, study, train files): 16 MiB [bytes].
+inline constexpr std::uintmax_t kMaxInputFileBytes = 16u << 20;
+
 KeySpec Real(std::string name, std::string unit, std::string default_toml, std::string meaning,
              std::optional<double> min = std::nullopt, std::optional<double> max = std::nullopt,
              bool min_inclusive = true, bool max_inclusive = true);
@@ -63,8 +67,12 @@ KeySpec Integer(std::string name, std::string unit, std::string default_toml,
 KeySpec Flag(std::string name, std::string default_toml, std::string meaning);
 KeySpec Text(std::string name, std::string default_toml, std::string meaning,
              std::vector<std::string> choices = {});
-KeySpec Reals(std::string name, std::string unit, std::string default_toml,
-              std::string meaning, std::optional<double> min = std::nullopt);
+KeySpec Reals(std::string name,
+              std::string unit,
+              std::string default_toml,
+              std::string meaning,
+              std::optional<double> min = std::nullopt,
+              std::optional<double> max = std::nullopt);
 KeySpec Temperature(std::string name, std::string default_toml, std::string meaning);  // K > 200
 inline constexpr double kMinModulusPa = 1e6;  // smallest Young's modulus accepted [Pa]
 KeySpec Modulus(std::string name, std::string default_toml, std::string meaning);  // Pa, 1e6..2e12

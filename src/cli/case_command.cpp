@@ -46,6 +46,7 @@ Command AddCaseCommand(CLI::App& app) {
                               std::to_string(plan.grid.size()) + " nodes (" + plan.grid_rule + ")";
                 } else if (doc.problems().empty() && doc.HasSection("contact")) {
                   const internal::ContactInputs in = internal::ReadContact(doc);
+                  if (doc.problems().empty()) internal::CheckFilmScale(doc, in, film);
                   if (doc.problems().empty()) {
                     const internal::ContactGridPlan plan = internal::PlanContactGrid(in, film);
                     plan_text = "line contact on " + std::to_string(plan.grid.size()) + " nodes (" +

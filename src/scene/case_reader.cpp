@@ -1,5 +1,6 @@
 #include "scene/case_reader.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 
@@ -93,6 +94,22 @@ Document ReadCaseDocument(const std::string& path) {
   } else if (doc.HasSection("motor")) {
     doc.Problem("motor", "", "[motor] drives the pinion of a gear pair",
                 "a [gear] case, or no [motor]");
+  }
+  // The result files are written into the output folder under this name: a plain file name,
+  // so that they stay in that folder (no folder part, no "..") and fit any file system.
+  if (doc.Given("output", "name")) {
+    const std::string name = doc.String("output", "name");
+    const bool plain = name.size() <= kMaxOutputNameChars && name != "." && name != ".." &&
+                       std::none_of(name.begin(), name.end(), [](char ch) {
+                         return ch == '/' || ch == '\\' || static_cast<unsigned char>(ch) < 0x20;
+                       });
+    if (!plain)
+      doc.Problem("output", "name",
+                  "the result files' base name must be a plain file name inside the output "
+                  "folder",
+                  "a name of at most " + std::to_string(kMaxOutputNameChars) +
+                      " characters without '/', '\\', control characters, or \"..\" (the "
+                      "folder is [output] directory or -o)");
   }
   if (!gear && doc.HasSection("operating")) {
     doc.Problem("operating", "", "[operating] belongs to a gear case",

@@ -4,11 +4,16 @@
 // the scene layer.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "base/schema.hpp"
 
 namespace tehl::internal {
+
+// The longest [output] name accepted (file names are at most 255 bytes; the result files
+// add suffixes such as "_profiles.png") [-].
+inline constexpr size_t kMaxOutputNameChars = 200;
 
 // Reads and checks a case file. Problems are collected in the returned Document; callers
 // add their own and then call ThrowIfProblems().

@@ -77,28 +77,32 @@ SectionSpec OperatingSection() {
 }
 
 SectionSpec ContactSection() {
-  return {"contact", "a plain line contact of two discs or rollers (instead of [gear])", false, {
-    Required(Positive("radius_1_m", "m", "", "radius of body 1"), "0.02"),
-    Positive("radius_2_m", "m", "", "radius of body 2; absent = a flat plane"),
-    Required(Real("speed_1_m_s", "m/s", "", "surface speed of body 1", -100.0, 100.0), "1.0"),
-    Required(Real("speed_2_m_s", "m/s", "", "surface speed of body 2", -100.0, 100.0), "1.0"),
-    Required(Positive("load_n_per_m", "N/m", "", "load per unit face width w"), "1e5"),
-    Modulus("youngs_modulus_1_pa", "206e9", "Young's modulus of body 1"),
-    Real("poisson_ratio_1", "-", "0.3", "Poisson's ratio of body 1", 0.0, 0.5, true, false),
-    Modulus("youngs_modulus_2_pa", "206e9", "Young's modulus of body 2"),
-    Real("poisson_ratio_2", "-", "0.3", "Poisson's ratio of body 2", 0.0, 0.5, true, false),
-    Positive("density_1_kg_m3", "kg/m^3", "7850.0", "density of body 1"),
-    Positive("density_2_kg_m3", "kg/m^3", "7850.0", "density of body 2"),
-    Positive("conductivity_1_w_mk", "W/(m K)", "46.0", "thermal conductivity of body 1"),
-    Positive("conductivity_2_w_mk", "W/(m K)", "46.0", "thermal conductivity of body 2"),
-    Positive("heat_capacity_1_j_kgk", "J/(kg K)", "470.0", "heat capacity of body 1"),
-    Positive("heat_capacity_2_j_kgk", "J/(kg K)", "470.0", "heat capacity of body 2"),
-    Reals("time_s", "s", "", "times of the load/speed tables (transient runs)", 0.0),
-    Reals("load_table_n_per_m", "N/m", "", "load at each time_s", 0.0),
-    Reals("speed_1_table_m_s", "m/s", "", "speed of body 1 at each time_s"),
-    Reals("speed_2_table_m_s", "m/s", "", "speed of body 2 at each time_s"),
-    Integer("steps", "-", "0", "time steps over the tables; 0 = steady solve only", 0.0, 1e7),
-  }};
+  return {
+      "contact",
+      "a plain line contact of two discs or rollers (instead of [gear])",
+      false,
+      {
+          Required(Real("radius_1_m", "m", "", "radius of body 1", 1e-6, 100.0), "0.02"),
+          Real("radius_2_m", "m", "", "radius of body 2; absent = a flat plane", 1e-6, 100.0),
+          Required(Real("speed_1_m_s", "m/s", "", "surface speed of body 1", -100.0, 100.0), "1.0"),
+          Required(Real("speed_2_m_s", "m/s", "", "surface speed of body 2", -100.0, 100.0), "1.0"),
+          Required(Positive("load_n_per_m", "N/m", "", "load per unit face width w"), "1e5"),
+          Modulus("youngs_modulus_1_pa", "206e9", "Young's modulus of body 1"),
+          Real("poisson_ratio_1", "-", "0.3", "Poisson's ratio of body 1", 0.0, 0.5, true, false),
+          Modulus("youngs_modulus_2_pa", "206e9", "Young's modulus of body 2"),
+          Real("poisson_ratio_2", "-", "0.3", "Poisson's ratio of body 2", 0.0, 0.5, true, false),
+          Positive("density_1_kg_m3", "kg/m^3", "7850.0", "density of body 1"),
+          Positive("density_2_kg_m3", "kg/m^3", "7850.0", "density of body 2"),
+          Positive("conductivity_1_w_mk", "W/(m K)", "46.0", "thermal conductivity of body 1"),
+          Positive("conductivity_2_w_mk", "W/(m K)", "46.0", "thermal conductivity of body 2"),
+          Positive("heat_capacity_1_j_kgk", "J/(kg K)", "470.0", "heat capacity of body 1"),
+          Positive("heat_capacity_2_j_kgk", "J/(kg K)", "470.0", "heat capacity of body 2"),
+          Reals("time_s", "s", "", "times of the load/speed tables (transient runs)", 0.0),
+          Reals("load_table_n_per_m", "N/m", "", "load at each time_s", 0.0),
+          Reals("speed_1_table_m_s", "m/s", "", "speed of body 1 at each time_s", -100.0, 100.0),
+          Reals("speed_2_table_m_s", "m/s", "", "speed of body 2 at each time_s", -100.0, 100.0),
+          Integer("steps", "-", "0", "time steps over the tables; 0 = steady solve only", 0.0, 1e7),
+      }};
 }
 
 SectionSpec LubricantSection() {
@@ -111,13 +115,17 @@ SectionSpec LubricantSection() {
 }
 
 SectionSpec SurfaceSection(const std::string& name, const std::string& what) {
-  return {"surfaces." + name, what, false, {
-    Text("roughness", "\"smooth\"", "surface form", {"smooth", "sinusoidal", "profile"}),
-    Real("amplitude_m", "m", "0.0", "amplitude of sinusoidal waviness", 0.0),
-    Positive("wavelength_m", "m", "", "wavelength of sinusoidal waviness"),
-    Real("phase_rad", "rad", "0.0", "phase of the waviness at t = 0"),
-    Text("profile_file", "\"\"", "two-column file (x [m], height [m]) of a measured profile"),
-  }};
+  return {
+      "surfaces." + name,
+      what,
+      false,
+      {
+          Text("roughness", "\"smooth\"", "surface form", {"smooth", "sinusoidal", "profile"}),
+          Real("amplitude_m", "m", "0.0", "amplitude of sinusoidal waviness", 0.0),
+          Positive("wavelength_m", "m", "", "wavelength of sinusoidal waviness"),
+          Real("phase_rad", "rad", "0.0", "phase of the waviness at t = 0", -100.0, 100.0),
+          Text("profile_file", "\"\"", "two-column file (x [m], height [m]) of a measured profile"),
+      }};
 }
 
 SectionSpec EffectsSection() {
@@ -160,8 +168,8 @@ SectionSpec NumericsSection() {
           Real("time_tolerance", "-", "0",
                "largest estimated local time error of rho h per substep, relative (thermal runs: "
                "and of the film temperature, relative to its rise); > 0: each step is taken in "
-               "substeps sized by it (docs/theory.md); 0 = one piece, substeps only where a step "
-               "does not converge",
+               "substeps sized by it (docs/theory.md), at least 1e-7; 0 = one piece, substeps "
+               "only where a step does not converge",
                0.0, 1.0),
           Text("linear_solver", "\"auto\"", "Newton linear solver",
                {"auto", "dense", "newton_krylov", "reused_lu"}),

@@ -88,6 +88,31 @@ ContactInputs ReadContact(Document& doc) {
   return in;
 }
 
+void CheckFilmScale(Document& doc, const ContactInputs& in, const FilmCase& film) {
+  if (!film.lubricant) return;
+  const double r = in.ReducedRadius();
+  const double eta0 = film.lubricant->viscosity().Evaluate(0.0, film.inlet_temperature_k).eta_pa_s;
+  const size_t rows = std::max({in.w.size(), in.u1.size(), in.u2.size()});
+  for (size_t i = 0; i < rows; ++i) {
+    const double w = in.w[std::min(i, in.w.size() - 1)];
+    const double um =
+        0.5 * (in.u1[std::min(i, in.u1.size() - 1)] + in.u2[std::min(i, in.u2.size() - 1)]);
+    const double h_martin = kMartinFilm * eta0 * um * r / w;
+    if (!(w > 0) || !(um > 0) || h_martin <= kMaxFilmToRadius * r) continue;
+    const char* key = doc.Given("contact", "load_table_n_per_m") && in.steps > 0
+                          ? "load_table_n_per_m"
+                          : "load_n_per_m";
+    doc.Problem("contact", key,
+                "a load of " + FormatShort(w) + " N/m at um = " + FormatShort(um) +
+                    " m/s carries a film of about " + FormatShort(h_martin) +
+                    " m (Martin's rigid film 4.896 eta0 um R / w) against R = " + FormatShort(r) +
+                    " m: Reynolds' thin-film theory needs h << R",
+                "loads >= " + FormatShort(kMartinFilm * eta0 * um / kMaxFilmToRadius) +
+                    " N/m at this speed (h <= " + FormatShort(kMaxFilmToRadius) + " R)");
+    return;
+  }
+}
+
 ContactGridPlan PlanContactGrid(const ContactInputs& in, const FilmCase& film) {
   const double r = in.ReducedRadius();
   GridUnits units;

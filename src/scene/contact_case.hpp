@@ -23,6 +23,10 @@ struct ContactInputs {
 // theory (b > 0.2 R) are reported to `doc`.
 ContactInputs ReadContact(Document& doc);
 
+// Reports a table row whose Martin film exceeds kMaxFilmToRadius R (film_case.hpp) at its
+// load key.
+void CheckFilmScale(Document& doc, const ContactInputs& in, const FilmCase& film);
+
 // The film grid of a [contact] run: x in units of the largest Hertz half-width over the tables
 // (elastic solids) or the longest rigid inlet scale (GridUnitsFor), with the case's node count
 // or one that spans every table row's Hertzian edge (automatic_grid.hpp).

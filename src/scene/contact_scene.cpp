@@ -56,6 +56,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   doc.ThrowIfProblems();
   const ContactInputs in = ReadContact(doc);
   internal::FilmCase film = internal::ReadFilmCase(doc);
+  if (doc.problems().empty()) internal::CheckFilmScale(doc, in, film);
   doc.ThrowIfProblems();
 
   const double r = in.ReducedRadius();

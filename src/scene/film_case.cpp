@@ -94,6 +94,22 @@ FilmCase ReadFilmCase(Document& doc) {
                               ? doc.Real("lubricant", "inlet_temperature_k")
                               : (f.lubricant ? f.lubricant->reference_temperature_k() : 0.0);
 
+  // The oil at the inlet temperature must stay within the viscosities the lubricant files
+  // accept (eta0 <= 1e4 Pa s; Roelands' eta_inf = 6.31e-5 Pa s below): a law extrapolated
+  // far beyond its reference temperature leaves that range.
+  if (f.lubricant && doc.Given("lubricant", "inlet_temperature_k")) {
+    const double eta = f.lubricant->viscosity().Evaluate(0.0, f.inlet_temperature_k).eta_pa_s;
+    if (!(eta >= kMinInletViscosityPaS && eta <= kMaxInletViscosityPaS))
+      doc.Problem("lubricant", "inlet_temperature_k",
+                  "the lubricant's viscosity at this temperature is " + FormatShort(eta) +
+                      " Pa s, outside the range of lubricant laws (" +
+                      FormatShort(kMinInletViscosityPaS) + " ... " +
+                      FormatShort(kMaxInletViscosityPaS) + " Pa s): the law is extrapolated " +
+                      "too far from its reference temperature " +
+                      FormatShort(f.lubricant->reference_temperature_k()) + " K",
+                  "an inlet temperature nearer the lubricant's reference temperature");
+  }
+
   f.effects.elastic = doc.Bool("effects", "elastic");
   f.effects.piezoviscous = doc.Bool("effects", "piezoviscous");
   f.effects.compressible = doc.Bool("effects", "compressible");
@@ -122,6 +138,14 @@ FilmCase ReadFilmCase(Document& doc) {
   o.upwind_order = static_cast<int>(doc.Int("numerics", "upwind_order"));
   o.time_scheme = TimeSchemeFromString(doc.String("numerics", "time_scheme"));
   o.time_tolerance = doc.Real("numerics", "time_tolerance");
+  // The estimate cannot resolve errors below the Newton solves' own (newton_tolerance, 1e-8
+  // by default): a smaller tolerance only drives every substep to the smallest size.
+  if (o.time_tolerance > 0 && o.time_tolerance < kMinTimeTolerance)
+    doc.Problem("numerics", "time_tolerance",
+                "a local time error below " + FormatShort(kMinTimeTolerance) +
+                    " is below what the Newton solves resolve: every substep would take the "
+                    "smallest size (1/4096 of the step)",
+                "0 (no control) or " + FormatShort(kMinTimeTolerance) + " ... 1");
   o.linear_solver = LinearSolverKindFromString(doc.String("numerics", "linear_solver"));
   o.tolerance = doc.Real("numerics", "newton_tolerance");
   o.max_iterations = static_cast<int>(doc.Int("numerics", "max_newton_iterations"));
@@ -135,7 +159,12 @@ FilmCase ReadFilmCase(Document& doc) {
   if (f.effects.roughness) {
     f.surface1 = ReadSurface(doc, "surfaces.surface1");
     f.surface2 = ReadSurface(doc, "surfaces.surface2");
-    if (!f.surface1 && !f.surface2)
+    // A surface whose data was reported (e.g. a profile file that cannot be read) is not
+    // smooth: the roughness switch is not the problem then.
+    auto rough = [&](const char* section) {
+      return doc.HasSection(section) && doc.String(section, "roughness") != "smooth";
+    };
+    if (!f.surface1 && !f.surface2 && !rough("surfaces.surface1") && !rough("surfaces.surface2"))
       doc.Problem("effects", "roughness", "roughness is on but both surfaces are smooth",
                   "a [surfaces.surface1] or [surfaces.surface2] with roughness = \"sinusoidal\" "
                   "or \"profile\", or roughness = false");

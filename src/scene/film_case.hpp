@@ -63,6 +63,22 @@ GridUnits GridUnitsFor(const FilmCase& film,
                        double w_n_per_m,
                        bool isoviscous_inlet = true);
 
+// Martin's rigid isoviscous film h = 4.896 eta0 um R / w (VALIDATION.md section 2) bounds
+// the film of a light load from above; Reynolds' equation is a thin-film theory (h / l =
+// sqrt(h / 2R) << 1 over the film's length l = sqrt(2 R h)), so a load whose Martin film
+// exceeds kMaxFilmToRadius R is reported at its key (a load of 1e-100 N/m otherwise gives an
+// infinite film) [-].
+inline constexpr double kMartinFilm = 4.896;
+inline constexpr double kMaxFilmToRadius = 1e-2;
+
+// The smallest [numerics] time_tolerance other than 0 [-].
+inline constexpr double kMinTimeTolerance = 1e-7;
+
+// The inlet viscosities a case accepts (those of the lubricant files: Roelands' eta_inf
+// 6.31e-5 Pa s, and 1e4 Pa s) [Pa s].
+inline constexpr double kMinInletViscosityPaS = 6.31e-5;
+inline constexpr double kMaxInletViscosityPaS = 1e4;
+
 // Reads [lubricant], [effects], [numerics] and [surfaces]; problems go into `doc`.
 // Effects this version cannot simulate yet are problems at their key, never ignored.
 FilmCase ReadFilmCase(Document& doc);

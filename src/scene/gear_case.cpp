@@ -111,6 +111,11 @@ bool CheckTipReliefKeys(Document& doc, const GearCase& c, double g) {
       std::snprintf(allowed, sizeof allowed, "tip_relief_length_m in (0, %.4g] [m] (g_alpha)", g);
       doc.Problem(member, "tip_relief_length_m", "a tip relief needs its length", allowed);
       ok = false;
+    } else if (!(amount > 0) && doc.Given(member, "tip_relief_length_m")) {
+      doc.Problem(member, "tip_relief_length_m",
+                  "a relief length without a relief amount does nothing (tip_relief_m is 0)",
+                  "tip_relief_m > 0 with it, or no tip_relief_length_m");
+      ok = false;
     } else if (amount > 0 && length > g) {
       std::snprintf(allowed, sizeof allowed, "tip_relief_length_m <= %.4g [m]", g);
       doc.Problem(member, "tip_relief_length_m",
@@ -234,6 +239,25 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
     }
   }
   if (!geometry_ok) return c;
+
+  // Pitch-line speeds of gears run from creep to about 200 m/s (turbine gears; ISO 6336-1
+  // rates up to there): beyond, or at a speed so small that the load computed from the power
+  // overflows, the inputs are not a gear drive.
+  const double v_pitch = c.operating.pinion_speed_rad_s * pair.pinion().pitch_radius_m;
+  if (!doc.HasSection("motor") &&
+      !(v_pitch >= kMinPitchLineSpeed && v_pitch <= kMaxPitchLineSpeed)) {
+    const bool rpm = doc.Given("operating", "pinion_speed_rpm");
+    const double per_unit =
+        rpm ? RpmToRadPerS(1.0) * pair.pinion().pitch_radius_m : pair.pinion().pitch_radius_m;
+    doc.Problem("operating", rpm ? "pinion_speed_rpm" : "pinion_speed_rad_s",
+                "the pitch-line speed " + FormatShort(v_pitch) + " m/s is outside " +
+                    FormatShort(kMinPitchLineSpeed) + " ... " + FormatShort(kMaxPitchLineSpeed) +
+                    " m/s, the range of gear drives",
+                FormatShort(kMinPitchLineSpeed / per_unit) + " ... " +
+                    FormatShort(kMaxPitchLineSpeed / per_unit) + (rpm ? " [rpm]" : " [rad/s]") +
+                    " for this pinion");
+    return c;
+  }
 
   // Hertz line-contact theory needs b << R: the whole nominal tooth load at the path end with
   // the smaller R bounds b / R on the path from above.

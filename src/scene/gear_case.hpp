@@ -28,6 +28,9 @@ class DynamicLoad;  // scene/dynamic_load.hpp
 // A relief can lift the tracked pair off near A and E; its films are solved where it carries
 // at least this share of F_bt (below it the film is near-rigid and its load negligible) [-].
 inline constexpr double kMinFilmShare = 0.01;
+// The pitch-line speeds a gear case accepts [m/s].
+inline constexpr double kMinPitchLineSpeed = 1e-6;
+inline constexpr double kMaxPitchLineSpeed = 200.0;
 
 struct GearCase {
   GearPairSpec spec;

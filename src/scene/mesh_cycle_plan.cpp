@@ -64,6 +64,31 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
   const double g = path.length_m();
   // The films are solved on the loaded part of the path (all of A..E without tip relief).
   const double begin = cycle.begin_m(), end = cycle.end_m();
+  // A load so light that its film is not thin against R (Martin's film at the pitch point's
+  // static load; film_case.hpp) is not a lubricated gear contact.
+  if (film.lubricant) {
+    const PathState st = cycle.At(std::clamp(path.s_c_m(), begin, end), false);
+    const double r = st.contact.reduced_radius_m, w = st.static_load_n_per_m;
+    const double eta0 =
+        film.lubricant->viscosity().Evaluate(0.0, film.inlet_temperature_k).eta_pa_s;
+    const double h_martin = kMartinFilm * eta0 * st.contact.um_m_s * r / w;
+    if (!(h_martin <= kMaxFilmToRadius * r)) {
+      const bool power = doc.Given("operating", "power_w");
+      doc.Problem("operating", power ? "power_w" : "pinion_torque_nm",
+                  "the tooth load " + FormatShort(w) +
+                      " N/m at the pitch point carries a film "
+                      "of about " +
+                      FormatShort(h_martin) +
+                      " m (Martin's rigid film 4.896 eta0 um "
+                      "R / w) against R = " +
+                      FormatShort(r) + " m: Reynolds' thin-film theory needs h << R",
+                  std::string(power ? "a larger power_w" : "a larger pinion_torque_nm") +
+                      " (tooth loads >= " +
+                      FormatShort(kMartinFilm * eta0 * st.contact.um_m_s / kMaxFilmToRadius) +
+                      " N/m at the pitch point)");
+      return plan;
+    }
+  }
   // b_max and the entrainment transits over a fine sampling of it (both sides of B, D).
   const int samples = 400;
   double transits = 0;
