@@ -142,6 +142,21 @@ Command AddLubricantCommand(CLI::App& app) {
                           "a writable path"});
         }
         problems.ThrowIfAny();
+        // A law may leave the range of doubles inside the allowed pressures (Barus' exp(alpha
+        // p) above about 700 / alpha): such a table is refused, not printed as inf and NaN.
+        for (double t : T.Values())
+          for (double pp : p.Values()) {
+            const ViscosityValue eta = lube.viscosity().Evaluate(pp, t);
+            if (std::isfinite(eta.eta_pa_s) && std::isfinite(eta.deta_dp) && eta.eta_pa_s > 0)
+              continue;
+            char what[200];
+            std::snprintf(what, sizeof what,
+                          "the viscosity law gives eta = %g Pa s at p = %g Pa, T = %g K: "
+                          "beyond the range of numbers",
+                          eta.eta_pa_s, pp, t);
+            throw InputError(InputProblem{"", 0, "--p", "\"" + args->p + "\"", what,
+                                          "pressures below that, where the law is finite"});
+          }
 
         std::cout << lube.Describe() << "  file: " << path << "\n\n";
         std::printf("%10s %9s %14s %13s %12s %16s\n", "p [MPa]", "T [K]", "eta [Pa s]",

@@ -293,6 +293,16 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
                 "the linear ramp needs 1 <= eps_alpha < 2; this pair has eps_alpha = " +
                     std::to_string(eps),
                 "load_sharing = \"stiffness\"");
+  // The potential-energy and Kuang-Yang models bend a spur tooth in its transverse plane; a
+  // helical tooth is not such a cantilever (and its transverse blank is not that model's).
+  if (pair.spec().helix_angle_rad > 0 && c.mesh_stiffness != "iso") {
+    doc.Problem("gear", "helix_angle_deg",
+                "the " + c.mesh_stiffness +
+                    " mesh stiffness is a spur-tooth model: a helical pair's stiffness needs "
+                    "the ISO 6336-1 method",
+                "helix_angle_deg = 0, or mesh_stiffness = \"iso\"");
+    return c;
+  }
   try {
     c.pair_stiffness = MakePairStiffness(pair, c.mesh_stiffness, &c.model);
   } catch (const InputError& e) {

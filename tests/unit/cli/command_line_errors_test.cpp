@@ -86,6 +86,40 @@ TEST(CommandLineErrors, AFolderGivenAsTheCaseFileIsNamedAsAFolder) {
   EXPECT_EQ(r.err.find("required section"), std::string::npos) << r.err;
 }
 
+// A device (here /dev/zero, which never ends) is not read as a case file: it is named as not
+// a regular file, and the program neither hangs nor runs out of memory.
+TEST(CommandLineErrors, ADeviceGivenAsTheCaseFileIsRefused) {
+  const testing::RunResult r = testing::RunTehl("case --check /dev/zero");
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("is not a regular file"), std::string::npos) << r.err;
+}
+
+// Barus' eta0 exp(alpha p) with alpha = 1e-7 1/Pa overflows above p = ln(DBL_MAX) / alpha =
+// 7.1 GPa: a table from 8 GPa is refused at --p instead of printing inf and NaN.
+TEST(CommandLineErrors, ALubricantTableBeyondTheLawsRangeIsRefused) {
+  const std::string path = testing::UniqueTempPath("barus.toml");
+  std::ifstream in(SourcePath("lubricants/sae40.toml"));
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::string s = text.str();
+  const size_t v = s.find("[viscosity]");
+  ASSERT_NE(v, std::string::npos);
+  const size_t end = s.find("\n[", v + 1);
+  s.replace(v, end - v,
+            "[viscosity]\nmodel = \"barus\"\nviscosity_pa_s = 1.0\n"
+            "pressure_coefficient_per_pa = 1e-7\ntemperature_coefficient_per_k = 0.0");
+  std::ofstream(path) << s;
+  const testing::RunResult ok = testing::RunTehl("lubricant '" + path + "' --p 0:7e9:3");
+  ASSERT_TRUE(ok.exited);
+  EXPECT_EQ(ok.exit_code, 0) << ok.err << ok.out;
+  const testing::RunResult r = testing::RunTehl("lubricant '" + path + "' --p 8e9:1e10:3");
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2) << r.err << r.out;
+  EXPECT_NE(r.err.find("--p"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("inf"), std::string::npos) << r.out;
+}
+
 TEST(CommandLineErrors, ASpeedOfTheWrongTypeIsNotAlsoReportedMissing) {
   const std::string path = testing::UniqueTempPath("string_speed.toml");
   std::ofstream(path) << GearCase("pinion_speed_rpm = \"1000 rpm\"");
