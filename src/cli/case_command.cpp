@@ -49,6 +49,7 @@ Command AddCaseCommand(CLI::App& app) {
                   if (doc.problems().empty()) internal::CheckFilmScale(doc, in, film);
                   if (doc.problems().empty()) {
                     const internal::ContactGridPlan plan = internal::PlanContactGrid(in, film);
+                    internal::CheckRoughnessResolution(doc, film, plan.grid.dx_m());
                     plan_text = "line contact on " + std::to_string(plan.grid.size()) + " nodes (" +
                                 plan.rule + ")";
                   }

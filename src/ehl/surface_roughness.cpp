@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -101,10 +102,22 @@ std::string SinusoidalWaviness::Describe() const {
 }
 
 MeasuredProfile MeasuredProfile::ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) {
-    throw InputError(InputProblem{path, 0, "file", path, "cannot be opened",
-                                  "a readable two-column text file (x [m], height [m])"});
+  // Only a regular file of sensible size: a device such as /dev/zero would be read forever.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  const bool regular = std::filesystem::is_regular_file(status);
+  const auto bytes = regular ? std::filesystem::file_size(path, ec) : 0;
+  if (regular && !ec && bytes > kMaxProfileFileBytes)
+    throw InputError(InputProblem{
+        path, 0, "file", path, "is " + std::to_string(bytes) + " bytes long",
+        "a profile file of at most " + std::to_string(kMaxProfileFileBytes) + " bytes"});
+  std::ifstream in;
+  if (regular && !ec) in.open(path);
+  if (!in.is_open() || !in) {
+    throw InputError(InputProblem{
+        path, 0, "file", path,
+        std::filesystem::exists(status) && !regular ? "is not a regular file" : "cannot be opened",
+        "a readable two-column text file (x [m], height [m])"});
   }
   ProblemList problems;
   std::vector<double> x, z;

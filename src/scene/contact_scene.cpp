@@ -62,6 +62,8 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   const double r = in.ReducedRadius();
   const internal::ContactGridPlan plan = internal::PlanContactGrid(in, film);
   const UniformGrid& grid = plan.grid;
+  internal::CheckRoughnessResolution(doc, film, grid.dx_m());
+  doc.ThrowIfProblems();
   if (!ro.quiet && film.grid_points == 0 && grid.size() > internal::kAutomaticGridMinNodes)
     std::fprintf(stderr, "grid %d nodes (%s)\n", grid.size(), plan.rule.c_str());
   LineContactSolver solver(grid, in.e_prime, *film.lubricant, film.effects, film.options,

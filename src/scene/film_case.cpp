@@ -60,6 +60,23 @@ GridUnits GridUnitsFor(const FilmCase& film,
   return {std::max(b_m, unit), std::max(b_m, unit * kRigidOutletUnit / kRigidInletUnit)};
 }
 
+void CheckRoughnessResolution(Document& doc, const FilmCase& film, double dx_m) {
+  if (!film.effects.roughness) return;
+  for (const char* section : {"surfaces.surface1", "surfaces.surface2"}) {
+    if (!doc.HasSection(section) || doc.String(section, "roughness") != "sinusoidal" ||
+        !doc.Given(section, "wavelength_m"))
+      continue;
+    const double wavelength = doc.Real(section, "wavelength_m");
+    if (wavelength >= 2.0 * dx_m) continue;
+    doc.Problem(section, "wavelength_m",
+                "a waviness of " + FormatShort(wavelength) +
+                    " m is shorter than two cells of the film grid (dx = " + FormatShort(dx_m) +
+                    " m): the grid cannot represent it",
+                "wavelength_m >= " + FormatShort(2.0 * dx_m) +
+                    " m on this grid, or more [numerics] grid_points");
+  }
+}
+
 ContactSolids ReadContactSolids(const Document& doc) {
   auto solid = [&](const std::string& section, const std::string& suffix) {
     return SolidThermal{doc.Real(section, "density" + suffix + "_kg_m3"),

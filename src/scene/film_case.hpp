@@ -79,6 +79,10 @@ inline constexpr double kMinTimeTolerance = 1e-7;
 inline constexpr double kMinInletViscosityPaS = 6.31e-5;
 inline constexpr double kMaxInletViscosityPaS = 1e4;
 
+// Sinusoidal waviness shorter than two cells of the film grid (dx [m]) is not represented on
+// it at all (Nyquist): reported at the surface's wavelength_m.
+void CheckRoughnessResolution(Document& doc, const FilmCase& film, double dx_m);
+
 // Reads [lubricant], [effects], [numerics] and [surfaces]; problems go into `doc`.
 // Effects this version cannot simulate yet are problems at their key, never ignored.
 FilmCase ReadFilmCase(Document& doc);

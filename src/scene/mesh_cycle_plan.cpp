@@ -114,6 +114,7 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
   plan.grid = choice.Grid(units);
   plan.grid_rule = choice.Rule(units);
   const UniformGrid& grid = plan.grid;
+  CheckRoughnessResolution(doc, film, grid.dx_m());
 
   // Step count: the user's, or automatic; with roughness at least dt <= dx/um per segment.
   const long long user_steps = doc.Int("numerics", "steps");

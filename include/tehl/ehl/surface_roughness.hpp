@@ -19,6 +19,7 @@
 // All shapes are immutable after construction; Height() is pure and thread-safe.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,9 @@ class SinusoidalWaviness final : public SurfaceShape {
   double wavelength_m_;
   double phase_rad_;
 };
+
+// The longest profile file read (a measured trace of a few million points) [bytes].
+inline constexpr std::uintmax_t kMaxProfileFileBytes = 256u << 20;
 
 // A measured profile: points (x_k, z_k), k = 0..m-1, x strictly increasing.
 //  - Linear interpolation between points.
