@@ -61,6 +61,8 @@ class LineContactSolver::Impl {
   // For the message of a failed steady solve: when the grid does not span the Hertzian edge of
   // the film that Moes' fit estimates (hertz_edge.hpp), says so and how many nodes would;
   // else empty.
+  // A failed solve's film that closes (h <= 0 somewhere): where, for its message; "" else.
+  std::string TouchHint(const FilmState& s) const;
   std::string EdgeHint(const ContactConditions& c) const;
   // `clock`: the state whose time and travel the guess takes (rough surfaces are sampled at
   // the travel); null = time and travel 0.

@@ -325,7 +325,11 @@ LineContactSolver::Summary LineContactSolver::Impl::Solve(const ContactCondition
                     ") nor by continuation in "
                     "load and pressure-viscosity coefficient (" +
                     stage.message + ")" + EdgeHint(c);
+      if (have_good)
+        sum.message += "; the film left is that of the last stage that converged, at " +
+                       internal::FormatReal(theta_good) + " of the load";
       if (!s->valid()) *s = start;
+      sum.message += TouchHint(*s);
     }
   }
   sum.total_iterations = total;
@@ -335,6 +339,17 @@ LineContactSolver::Summary LineContactSolver::Impl::Solve(const ContactCondition
     sum.load_error = std::abs(grid_.dx_m() * s->p_pa.sum() - c.load_n_per_m) / c.load_n_per_m;
   sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
   return sum;
+}
+
+std::string LineContactSolver::Impl::TouchHint(const FilmState& s) const {
+  if (!s.valid()) return "";
+  const Eigen::Index closed = (s.h_m.array() <= 0.0).count();
+  if (closed == 0) return "";
+  return "; the film closes (h <= 0 at " + std::to_string(closed) + " of " +
+         std::to_string(s.h_m.size()) + " nodes, down to " +
+         internal::FormatShort(s.h_m.minCoeff()) +
+         " m): the roughness or the load leave no full film there, and asperity contact is "
+         "not modelled";
 }
 
 std::string LineContactSolver::Impl::EdgeHint(const ContactConditions& c) const {

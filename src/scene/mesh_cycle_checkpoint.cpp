@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -13,9 +15,22 @@
 namespace tehl::internal {
 namespace {
 
-constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '6'};
-constexpr char kRowsMagic[8] = {'T', 'E', 'H', 'L', 'R', 'O', 'W', '3'};
+// The last character of each magic is the format's version.
+constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '7'};
+constexpr char kRowsMagic[8] = {'T', 'E', 'H', 'L', 'R', 'O', 'W', '4'};
 constexpr std::int64_t kRowsHeaderBytes = sizeof kRowsMagic + sizeof(std::uint64_t);
+constexpr std::uint64_t kChecksumBytes = sizeof(std::uint64_t);
+
+// FNV-1a, 64 bit, continued from `h`: stable across runs and builds (std::hash is not required
+// to be), and any change of a single byte changes it (each step is a bijection of the state).
+constexpr std::uint64_t kFnvOffset = 1469598103934665603ull;
+std::uint64_t Fnv1a(const char* p, size_t n, std::uint64_t h = kFnvOffset) {
+  for (size_t i = 0; i < n; ++i) {
+    h ^= static_cast<unsigned char>(p[i]);
+    h *= 1099511628211ull;
+  }
+  return h;
+}
 
 // The profile arrays of a result, in journal order.
 std::array<std::vector<std::vector<double>>*, 6> Profiles(MeshCycleResult& r) {
@@ -129,9 +144,26 @@ ContactConditions GetConditions(In& in) {
 }
 
 void PutStep(Out& o, const MeshCycleStep& k) {
-  for (double v : {k.s_m, k.time_s, k.reduced_radius_m, k.u1_m_s, k.u2_m_s, k.um_m_s, k.srr,
-                   k.load_n_per_m, k.static_load_n_per_m, k.h_min_m, k.h_c_m, k.p_max_pa, k.t_max_k, k.t_mid_max_k,
-                   k.t1_max_k, k.t2_max_k, k.friction_coefficient, k.c_rt, k.c_ut, k.c_wt})
+  for (double v : {k.s_m,
+                   k.time_s,
+                   k.reduced_radius_m,
+                   k.u1_m_s,
+                   k.u2_m_s,
+                   k.um_m_s,
+                   k.srr,
+                   k.load_n_per_m,
+                   k.static_load_n_per_m,
+                   k.h_min_m,
+                   k.h_c_m,
+                   k.p_max_pa,
+                   k.t_max_k,
+                   k.t_mid_max_k,
+                   k.t1_max_k,
+                   k.t2_max_k,
+                   k.friction_coefficient,
+                   k.c_rt,
+                   k.c_ut,
+                   k.c_wt})
     o.F(v);
   o.I(k.pairs_in_contact);
   o.S(k.zone);
@@ -150,18 +182,34 @@ void PutStep(Out& o, const MeshCycleStep& k) {
 
 MeshCycleStep GetStep(In& in) {
   MeshCycleStep k;
-  for (double* v : {&k.s_m, &k.time_s, &k.reduced_radius_m, &k.u1_m_s, &k.u2_m_s, &k.um_m_s,
-                    &k.srr, &k.load_n_per_m, &k.static_load_n_per_m, &k.h_min_m, &k.h_c_m, &k.p_max_pa, &k.t_max_k,
-                    &k.t_mid_max_k, &k.t1_max_k, &k.t2_max_k, &k.friction_coefficient, &k.c_rt,
-                    &k.c_ut, &k.c_wt})
+  for (double* v : {&k.s_m,
+                    &k.time_s,
+                    &k.reduced_radius_m,
+                    &k.u1_m_s,
+                    &k.u2_m_s,
+                    &k.um_m_s,
+                    &k.srr,
+                    &k.load_n_per_m,
+                    &k.static_load_n_per_m,
+                    &k.h_min_m,
+                    &k.h_c_m,
+                    &k.p_max_pa,
+                    &k.t_max_k,
+                    &k.t_mid_max_k,
+                    &k.t1_max_k,
+                    &k.t2_max_k,
+                    &k.friction_coefficient,
+                    &k.c_rt,
+                    &k.c_ut,
+                    &k.c_wt})
     *v = in.F();
   k.pairs_in_contact = static_cast<int>(in.I());
   k.zone = in.S();
   LineContactSolver::Summary& s = k.summary;
   s.termination = static_cast<LineContactSolver::Termination>(in.I());
   s.message = in.S();
-  for (int* v : {&s.iterations, &s.total_iterations, &s.continuation_stages,
-                 &s.krylov_iterations, &s.substeps, &s.coupling_iterations})
+  for (int* v : {&s.iterations, &s.total_iterations, &s.continuation_stages, &s.krylov_iterations,
+                 &s.substeps, &s.coupling_iterations})
     *v = static_cast<int>(in.I());
   for (double* v : {&s.residual, &s.load_error, &s.wall_time_s, &s.temperature_change_k,
                     &s.energy_balance_error, &s.time_error})
@@ -173,15 +221,7 @@ MeshCycleStep GetStep(In& in) {
 
 }  // namespace
 
-std::uint64_t CaseFingerprint(const std::string& text) {
-  // FNV-1a, 64 bit: stable across runs and builds (std::hash is not required to be).
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
+std::uint64_t CaseFingerprint(const std::string& text) { return Fnv1a(text.data(), text.size()); }
 
 std::string CheckpointRowsPath(const std::string& checkpoint_path) {
   return checkpoint_path + ".rows";
@@ -193,6 +233,7 @@ CheckpointWriter::CheckpointWriter(std::string checkpoint_path)
 void CheckpointWriter::ContinueFrom(const MeshCycleCheckpoint& c) {
   journal_id_ = c.journal_id;
   journal_bytes_ = c.journal_bytes;
+  journal_checksum_ = c.journal_checksum;
   written_[0] = static_cast<std::int64_t>(c.result.steps.size());
   const auto profiles = Profiles(c.result);
   for (size_t a = 0; a < profiles.size(); ++a)
@@ -248,6 +289,8 @@ void CheckpointWriter::Write(std::uint64_t fingerprint,
     if (!f) throw std::runtime_error("cannot write the checkpoint journal " + rows_path);
   }
   const std::int64_t committed = journal_bytes_ + static_cast<std::int64_t>(chunk.bytes().size());
+  const std::uint64_t checksum = Fnv1a(chunk.bytes().data(), chunk.bytes().size(),
+                                       journal_bytes_ == 0 ? kFnvOffset : journal_checksum_);
 
   // 2. The checkpoint proper, which commits the journal up to `committed`.
   Out o;
@@ -257,6 +300,7 @@ void CheckpointWriter::Write(std::uint64_t fingerprint,
   o.F(elapsed_s);
   o.I(static_cast<std::int64_t>(journal_id_));
   o.I(committed);
+  o.I(static_cast<std::int64_t>(checksum));
   for (std::int64_t n : now) o.I(n);
   o.V(s.p_pa);
   o.V(s.h_m);
@@ -273,6 +317,8 @@ void CheckpointWriter::Write(std::uint64_t fingerprint,
   o.F(history.next_substep_s);
   PutConditions(o, history.c_prev);
   o.M(history.t_prev_k);
+  const std::uint64_t own = Fnv1a(o.bytes().data(), o.bytes().size());
+  o.I(static_cast<std::int64_t>(own));  // the checksum of everything before it
 
   const std::string tmp = path_ + ".part";
   {
@@ -281,8 +327,15 @@ void CheckpointWriter::Write(std::uint64_t fingerprint,
     f.flush();
     if (!f) throw std::runtime_error("cannot write the checkpoint " + tmp);
   }
-  std::filesystem::rename(tmp, path_);
+  std::error_code ec;
+  std::filesystem::rename(tmp, path_, ec);
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw std::runtime_error("cannot write the checkpoint " + path_ + ": " + ec.message());
+  }
   journal_bytes_ = committed;
+  journal_checksum_ = checksum;
   written_ = now;
 }
 
@@ -304,24 +357,81 @@ std::optional<std::vector<char>> ReadPrefix(const std::string& path, std::int64_
   return b;
 }
 
-}  // namespace
+// Why a checkpoint was not used.
+struct Unusable : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
-std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) return std::nullopt;
-  std::vector<char> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+void RequireFinite(double v, const char* what) {
+  if (!std::isfinite(v)) throw Unusable(std::string("it holds a non-finite ") + what);
+}
+void RequireFinite(const Eigen::Ref<const Eigen::MatrixXd>& m, const char* what) {
+  if (!m.allFinite()) throw Unusable(std::string("it holds a non-finite ") + what);
+}
+
+// The film and the solver history a run continues from: finite, as every converged level is
+// (a checkpoint is written only after a step that converged).
+void RequireFinite(const MeshCycleCheckpoint& c) {
+  RequireFinite(c.elapsed_s, "wall time");
+  const FilmState& s = c.state;
+  RequireFinite(s.p_pa, "pressure");
+  RequireFinite(s.h_m, "film thickness");
+  for (double v : {s.h0_m, s.time_s, s.travel1_m, s.travel2_m}) RequireFinite(v, "film state");
+  const FilmTemperature& t = s.temperature;
+  RequireFinite(t.t_k, "film temperature");
+  for (const auto* v : {&t.t1_k, &t.t2_k, &t.q1_w_m2, &t.q2_w_m2})
+    RequireFinite(*v, "surface temperature or heat flux");
+  const LineContactSolver::TransientHistory& h = c.history;
+  for (const auto* v : {&h.q1, &h.q2, &h.q3}) RequireFinite(*v, "transient history");
+  for (double v : {h.dt_prev_s, h.dt_prev2_s, h.next_substep_s, h.c_prev.reduced_radius_m,
+                   h.c_prev.u1_m_s, h.c_prev.u2_m_s, h.c_prev.load_n_per_m, h.c_prev.temperature_k})
+    RequireFinite(v, "transient history");
+  RequireFinite(h.t_prev_k, "transient history");
+}
+
+// Reads the checkpoint at `path` and its journal; throws Unusable saying why they cannot be
+// used. Returns nullopt when there is no checkpoint.
+std::optional<MeshCycleCheckpoint> Read(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (status.type() == fs::file_type::not_found) return std::nullopt;
+  if (ec) throw Unusable("it cannot be examined: " + ec.message());
+  if (fs::is_directory(status)) throw Unusable("it is a folder, not a file");
+  if (!fs::is_regular_file(status)) throw Unusable("it is not a regular file");
+  std::vector<char> bytes;
+  {
+    std::ifstream f(path, std::ios::binary);
+    if (!f) throw Unusable("it cannot be read");
+    bytes.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+    if (f.bad()) throw Unusable("it cannot be read");
+  }
+  if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, 7) != 0)
+    throw Unusable("it is not a tehl checkpoint");
+  if (bytes[7] != kMagic[7])
+    throw Unusable(std::string("it was written by another version of tehl (format ") +
+                   std::string(bytes.data(), sizeof kMagic) + "; this version reads " +
+                   std::string(kMagic, sizeof kMagic) + ")");
+  std::uint64_t stored = 0;
+  if (bytes.size() < sizeof kMagic + kChecksumBytes)
+    throw Unusable("the file is damaged (it is cut short)");
+  std::memcpy(&stored, bytes.data() + bytes.size() - kChecksumBytes, kChecksumBytes);
+  bytes.resize(bytes.size() - kChecksumBytes);
+  if (Fnv1a(bytes.data(), bytes.size()) != stored)
+    throw Unusable("the file is damaged (its checksum does not match its contents)");
+
+  MeshCycleCheckpoint c;
+  std::array<std::int64_t, 7> counts{};
   try {
     In in(std::move(bytes));
     char magic[8];
     in.Raw(magic, sizeof magic);
-    if (std::memcmp(magic, kMagic, sizeof magic) != 0) return std::nullopt;
-    MeshCycleCheckpoint c;
     c.fingerprint = static_cast<std::uint64_t>(in.I());
     c.next_step = static_cast<int>(in.I());
     c.elapsed_s = in.F();
     c.journal_id = static_cast<std::uint64_t>(in.I());
     c.journal_bytes = in.I();
-    std::array<std::int64_t, 7> counts{};
+    c.journal_checksum = static_cast<std::uint64_t>(in.I());
     for (auto& n : counts) n = in.I();
     FilmState& s = c.state;
     s.p_pa = in.E();
@@ -339,15 +449,30 @@ std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path) {
     c.history.next_substep_s = in.F();
     c.history.c_prev = GetConditions(in);
     c.history.t_prev_k = in.M();
-    if (!in.done() || c.journal_bytes < kRowsHeaderBytes) return std::nullopt;
+    if (!in.done() || c.journal_bytes < kRowsHeaderBytes) throw std::runtime_error("layout");
+  } catch (const std::exception&) {
+    throw Unusable("the file is damaged (its contents do not have the layout of a checkpoint)");
+  }
+  RequireFinite(c);
 
-    // The committed part of the journal: its header, then one chunk per checkpoint.
-    std::optional<std::vector<char>> rows = ReadPrefix(CheckpointRowsPath(path), c.journal_bytes);
-    if (!rows) return std::nullopt;
+  // The committed part of the journal: its header, then one chunk per checkpoint.
+  const std::string rows_path = CheckpointRowsPath(path);
+  if (!fs::is_regular_file(rows_path, ec))
+    throw Unusable("its rows file " + rows_path + " is missing or not a file");
+  std::optional<std::vector<char>> rows = ReadPrefix(rows_path, c.journal_bytes);
+  if (!rows)
+    throw Unusable("its rows file " + rows_path + " is shorter than the checkpoint records");
+  if (std::memcmp(rows->data(), kRowsMagic, sizeof kRowsMagic) != 0)
+    throw Unusable("its rows file " + rows_path + " is not of this version of tehl");
+  if (Fnv1a(rows->data(), rows->size()) != c.journal_checksum)
+    throw Unusable("its rows file " + rows_path +
+                   " is damaged or belongs to another run (its checksum does not match the "
+                   "one the checkpoint records)");
+  try {
     In j(std::move(*rows));
+    char magic[8];
     j.Raw(magic, sizeof magic);
-    if (std::memcmp(magic, kRowsMagic, sizeof magic) != 0) return std::nullopt;
-    if (static_cast<std::uint64_t>(j.I()) != c.journal_id) return std::nullopt;
+    if (static_cast<std::uint64_t>(j.I()) != c.journal_id) throw std::runtime_error("identity");
     MeshCycleResult& r = c.result;
     const auto profiles = Profiles(r);
     while (!j.done()) {
@@ -355,11 +480,25 @@ std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path) {
       for (auto* a : profiles)
         for (std::int64_t k = j.Count(); k > 0; --k) a->push_back(j.V());
     }
-    if (static_cast<std::int64_t>(r.steps.size()) != counts[0]) return std::nullopt;
+    if (static_cast<std::int64_t>(r.steps.size()) != counts[0])
+      throw std::runtime_error("row count");
     for (size_t a = 0; a < profiles.size(); ++a)
-      if (static_cast<std::int64_t>(profiles[a]->size()) != counts[a + 1]) return std::nullopt;
-    return c;
+      if (static_cast<std::int64_t>(profiles[a]->size()) != counts[a + 1])
+        throw std::runtime_error("profile count");
   } catch (const std::exception&) {
+    throw Unusable("its rows file " + rows_path + " does not hold the rows the checkpoint records");
+  }
+  return c;
+}
+
+}  // namespace
+
+std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path, std::string* problem) {
+  if (problem) problem->clear();
+  try {
+    return Read(path);
+  } catch (const std::exception& e) {
+    if (problem) *problem = e.what();
     return std::nullopt;
   }
 }

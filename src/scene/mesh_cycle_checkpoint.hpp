@@ -10,7 +10,11 @@
 //    checkpoints of a 2386-step rough cycle a fifth of its run time). Bytes past the committed
 //    length (a run killed between the append and the rename) are ignored, and cut off when
 //    the run is continued.
-// Little-endian doubles and 64-bit integers, length-prefixed arrays and strings. Private to
+// Little-endian doubles and 64-bit integers, length-prefixed arrays and strings. Integrity:
+// NAME.checkpoint ends with a 64-bit FNV-1a checksum of all its bytes before it, and records
+// the FNV-1a checksum of the committed journal, so a byte changed in either file (a disk or
+// copy error, an edit by hand) keeps the checkpoint from being used rather than giving a
+// wrong result. The magics end in the format's version (TEHLCKP7, TEHLROW4). Private to
 // src/scene.
 #pragma once
 
@@ -31,8 +35,9 @@ struct MeshCycleCheckpoint {
   MeshCycleResult result;         // rows and profiles so far (from the journal)
   FilmState state;                // the film at the last step done
   LineContactSolver::TransientHistory history;
-  std::uint64_t journal_id = 0;    // identity of the journal the rows came from
-  std::int64_t journal_bytes = 0;  // its committed length [bytes]
+  std::uint64_t journal_id = 0;        // identity of the journal the rows came from
+  std::int64_t journal_bytes = 0;      // its committed length [bytes]
+  std::uint64_t journal_checksum = 0;  // FNV-1a of its committed bytes
 };
 
 std::uint64_t CaseFingerprint(const std::string& case_text);
@@ -65,11 +70,16 @@ class CheckpointWriter {
   std::string path_;
   std::uint64_t journal_id_ = 0;
   std::int64_t journal_bytes_ = 0;         // 0: no journal of this run yet
+  std::uint64_t journal_checksum_ = 0;     // FNV-1a of the journal's committed bytes
   std::array<std::int64_t, 7> written_{};  // steps, then the six profile arrays, on disk
 };
 
-// Reads a checkpoint and its journal; nullopt when either is missing, damaged, of another
-// version, or when they do not belong together.
-std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path);
+// Reads a checkpoint and its journal; nullopt when there is none, or when it cannot be used:
+// either file damaged (a checksum that does not match, a layout that does not parse, a
+// non-finite value in the film state or solver history), of another version, not a file (a
+// folder in its place), or the two not belonging together. `problem`, when given, receives
+// why (empty when there is no checkpoint). Never throws.
+std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path,
+                                                  std::string* problem = nullptr);
 
 }  // namespace tehl::internal

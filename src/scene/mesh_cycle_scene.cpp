@@ -323,7 +323,9 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   bool checkpoints_off = false;  // a checkpoint could not be written
   if (!checkpoint_path.empty()) checkpoints.emplace(checkpoint_path);
   if (ro.resume && !checkpoint_path.empty()) {
-    std::optional<internal::MeshCycleCheckpoint> ck = internal::ReadCheckpoint(checkpoint_path);
+    std::string unusable;  // why a checkpoint that is there cannot be used
+    std::optional<internal::MeshCycleCheckpoint> ck =
+        internal::ReadCheckpoint(checkpoint_path, &unusable);
     if (ck && ck->fingerprint == fingerprint && ck->next_step >= 1 &&
         static_cast<size_t>(ck->next_step) < s_steps.size() &&
         ck->result.steps.size() == static_cast<size_t>(ck->next_step) &&
@@ -339,6 +341,9 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
       first = static_cast<size_t>(ck->next_step);
       elapsed_before = ck->elapsed_s;
       r.resumed_from_step = ck->next_step;
+    } else if (!unusable.empty()) {  // printed even with -q, as a checkpoint not written is
+      std::fprintf(stderr, "warning: the checkpoint %s is not used: %s; starting at A\n",
+                   checkpoint_path.c_str(), unusable.c_str());
     } else if (!ro.quiet) {
       std::fprintf(stderr, "no usable checkpoint %s for this case: starting at A\n",
                    checkpoint_path.c_str());
