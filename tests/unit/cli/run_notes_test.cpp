@@ -289,5 +289,24 @@ TEST(RunNotes, ANearlyIsoviscousCycleWithAShortInletIsNoted) {
   EXPECT_EQ(normal.out.find("nearly isoviscous"), std::string::npos) << normal.out;
 }
 
+// A waviness of 2 um on a disc whose smooth film is about 0.7 um (the disc of
+// cases/disc_steady.toml, R = 10 mm, 100 kN/m, um = 1 m/s; docs/validation.md section 3):
+// no full film carries the load, the solve fails (exit 1), and its message says that the
+// film closes rather than only that the line search stalled.
+TEST(RunNotes, AFailedFilmThatClosesSaysSo) {
+  const std::string path = UniqueTempPath("closing.toml");
+  std::ofstream(path) << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nspeed_1_m_s = 1.1\n"
+                         "speed_2_m_s = 0.9\nload_n_per_m = 1.0e5\ntime_s = [0.0, 2.0e-4]\n"
+                         "steps = 100\n[lubricant]\nname = \"sae40\"\n[effects]\n"
+                         "roughness = true\n[numerics]\ngrid_points = 257\n"
+                         "[surfaces.surface1]\nroughness = \"sinusoidal\"\namplitude_m = 2.0e-6\n"
+                         "wavelength_m = 5.0e-5\n[output]\ndirectory = \""
+                      << UniqueTempPath("out") << "\"\n";
+  const RunResult r = RunTehl("run -q '" + path + "'");
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.err.find("the film closes (h <= 0 at"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace tehl::testing
