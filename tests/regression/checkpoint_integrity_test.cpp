@@ -41,30 +41,10 @@ std::string SmallCase() {
                      {{"grid_points", "129"}, {"steps", "20"}, {"thermal", "false"}});
 }
 
-// Starts `tehl run` and kills it with SIGKILL right after its first checkpoint (at step 5; with
-// TEHL_STOP_AFTER_CHECKPOINT the program stops itself once the checkpoint is on disk).
-Killed RunAndKillAfterCheckpoint(const std::string& case_path, const std::string& dir) {
-  Killed k{case_path, dir, dir + "/" + fs::path(case_path).stem().string() + ".checkpoint"};
-  const pid_t pid = fork();
-  EXPECT_GE(pid, 0);
-  if (pid == 0) {
-    std::FILE* o = std::freopen("/dev/null", "w", stdout);
-    std::FILE* e = std::freopen("/dev/null", "w", stderr);
-    (void)o;
-    (void)e;
-    setenv("TEHL_STOP_AFTER_CHECKPOINT", "1", 1);
-    execl(TEHL_BINARY, "tehl", "run", case_path.c_str(), "-o", dir.c_str(), "-q",
-          "--checkpoint-every", "5", static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  int status = 0;
-  EXPECT_EQ(waitpid(pid, &status, WUNTRACED), pid);
-  EXPECT_TRUE(WIFSTOPPED(status)) << "the run ended before its first checkpoint";
-  EXPECT_EQ(kill(pid, SIGKILL), 0);
-  EXPECT_EQ(waitpid(pid, &status, 0), pid);
-  EXPECT_TRUE(fs::is_regular_file(k.checkpoint));
-  EXPECT_TRUE(fs::is_regular_file(internal::CheckpointRowsPath(k.checkpoint)));
-  return k;
+// A run of `case_path` killed right after its first checkpoint (at step 5).
+Killed KilledAfterCheckpoint(const std::string& case_path, const std::string& dir) {
+  testing::RunAndKillAfterCheckpoint(case_path, dir);
+  return {case_path, dir, dir + "/" + fs::path(case_path).stem().string() + ".checkpoint"};
 }
 
 // Inverts the bits of `n` bytes of `path` from `offset` on.
@@ -117,7 +97,7 @@ void ExpectFreshResult(const Killed& k, const testing::RunResult& r) {
 
 // The killed run's checkpoint as written is used: the tests below change only what they say.
 TEST(CheckpointIntegrity, AnIntactCheckpointIsResumed) {
-  const Killed k = RunAndKillAfterCheckpoint(SmallCase(), TempDirFor("ck_intact"));
+  const Killed k = KilledAfterCheckpoint(SmallCase(), TempDirFor("ck_intact"));
   const testing::RunResult r = Resume(k);
   ASSERT_TRUE(r.exited);
   EXPECT_EQ(r.exit_code, 0) << r.err;
@@ -128,7 +108,7 @@ TEST(CheckpointIntegrity, AnIntactCheckpointIsResumed) {
 // Bytes changed in the middle of the checkpoint (the film state or the solver history) are
 // found by its checksum: the run starts at A instead of continuing from a wrong film.
 TEST(CheckpointIntegrity, ADamagedCheckpointIsNotUsed) {
-  const Killed k = RunAndKillAfterCheckpoint(SmallCase(), TempDirFor("ck_damaged"));
+  const Killed k = KilledAfterCheckpoint(SmallCase(), TempDirFor("ck_damaged"));
   FlipBytes(k.checkpoint, fs::file_size(k.checkpoint) / 2, 8);
   const testing::RunResult r = Resume(k);
   EXPECT_NE(r.err.find("warning: the checkpoint " + k.checkpoint +
@@ -141,7 +121,7 @@ TEST(CheckpointIntegrity, ADamagedCheckpointIsNotUsed) {
 
 // The D3 reproducer: a NaN written over a value of the checkpoint.
 TEST(CheckpointIntegrity, ANanWrittenIntoTheCheckpointIsFound) {
-  const Killed k = RunAndKillAfterCheckpoint(SmallCase(), TempDirFor("ck_nan"));
+  const Killed k = KilledAfterCheckpoint(SmallCase(), TempDirFor("ck_nan"));
   WriteNan(k.checkpoint, fs::file_size(k.checkpoint) / 2);
   const testing::RunResult r = Resume(k);
   EXPECT_NE(r.err.find("checkpoint " + k.checkpoint + " is not used: the file is damaged"),
@@ -154,7 +134,7 @@ TEST(CheckpointIntegrity, ANanWrittenIntoTheCheckpointIsFound) {
 // with the h profile of the last step, then the four counts of the empty temperature arrays),
 // which used to be copied into /profiles/h unseen.
 TEST(CheckpointIntegrity, ADamagedRowsFileIsNotUsed) {
-  const Killed k = RunAndKillAfterCheckpoint(SmallCase(), TempDirFor("ck_rows"));
+  const Killed k = KilledAfterCheckpoint(SmallCase(), TempDirFor("ck_rows"));
   const std::string rows = internal::CheckpointRowsPath(k.checkpoint);
   WriteNan(rows, fs::file_size(rows) - 4 * sizeof(std::int64_t) - sizeof(double));
   const testing::RunResult r = Resume(k);
@@ -167,7 +147,7 @@ TEST(CheckpointIntegrity, ADamagedRowsFileIsNotUsed) {
 
 // Bytes flipped in the middle of the rows file likewise.
 TEST(CheckpointIntegrity, FlippedBytesInTheRowsFileAreFound) {
-  const Killed k = RunAndKillAfterCheckpoint(SmallCase(), TempDirFor("ck_rows_flip"));
+  const Killed k = KilledAfterCheckpoint(SmallCase(), TempDirFor("ck_rows_flip"));
   const std::string rows = internal::CheckpointRowsPath(k.checkpoint);
   FlipBytes(rows, fs::file_size(rows) / 2, 3);
   const testing::RunResult r = Resume(k);

@@ -18,6 +18,7 @@ namespace tehl {
 namespace {
 namespace fs = std::filesystem;
 using testing::ReducedCase;
+using testing::RunAndKillAfterCheckpoint;
 using testing::TempDirFor;
 
 MeshCycleResult RunInProcess(const std::string& case_path, const std::string& dir, bool resume) {
@@ -27,33 +28,6 @@ MeshCycleResult RunInProcess(const std::string& case_path, const std::string& di
   o.resume = resume;
   o.checkpoint_every = 5;
   return RunMeshCycle(case_path, o);
-}
-
-// Starts `tehl run` as a child and kills it with SIGKILL right after its first checkpoint:
-// TEHL_STOP_AFTER_CHECKPOINT makes the child stop itself (SIGSTOP) once the checkpoint is
-// written, so the kill lands at a known step however fast or slow the run is.
-void RunAndKillAfterCheckpoint(const std::string& case_path, const std::string& dir) {
-  const std::string checkpoint = dir + "/" + fs::path(case_path).stem().string() + ".checkpoint";
-  const pid_t pid = fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    std::FILE* o = std::freopen("/dev/null", "w", stdout);
-    std::FILE* e = std::freopen("/dev/null", "w", stderr);
-    (void)o;
-    (void)e;
-    setenv("TEHL_STOP_AFTER_CHECKPOINT", "1", 1);
-    execl(TEHL_BINARY, "tehl", "run", case_path.c_str(), "-o", dir.c_str(), "-q",
-          "--checkpoint-every", "5", static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  int status = 0;
-  ASSERT_EQ(waitpid(pid, &status, WUNTRACED), pid);
-  ASSERT_TRUE(WIFSTOPPED(status)) << "the run ended before its first checkpoint";
-  ASSERT_TRUE(fs::exists(checkpoint)) << "stopped without a checkpoint";
-  ASSERT_EQ(kill(pid, SIGKILL), 0);
-  ASSERT_EQ(waitpid(pid, &status, 0), pid);
-  ASSERT_TRUE(WIFSIGNALED(status));
-  EXPECT_EQ(WTERMSIG(status), SIGKILL);
 }
 
 void ExpectSameCycle(const MeshCycleResult& a, const MeshCycleResult& b, bool thermal) {

@@ -3,17 +3,21 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
-#include <fstream>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <regex>
 #include <sstream>
 #include <string>
 
-#include "tehl/scene/mesh_cycle_scene.hpp"
 #include "support/scratch_path.hpp"
+#include "tehl/scene/mesh_cycle_scene.hpp"
 
 namespace tehl::testing {
 
@@ -64,6 +68,35 @@ inline MeshCycleResult RunReduced(const std::string& case_name,
   o.quiet = true;
   o.write_files = false;
   return RunMeshCycle(ReducedCase(case_name, replace), o);
+}
+
+// Starts `tehl run` as a child and kills it with SIGKILL right after its first checkpoint
+// (written every 5 steps): TEHL_STOP_AFTER_CHECKPOINT makes the child stop itself (SIGSTOP)
+// once the checkpoint is written, so the kill lands at a known step however fast or slow the
+// run is.
+inline void RunAndKillAfterCheckpoint(const std::string& case_path, const std::string& dir) {
+  const std::string checkpoint =
+      dir + "/" + std::filesystem::path(case_path).stem().string() + ".checkpoint";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    std::FILE* o = std::freopen("/dev/null", "w", stdout);
+    std::FILE* e = std::freopen("/dev/null", "w", stderr);
+    (void)o;
+    (void)e;
+    setenv("TEHL_STOP_AFTER_CHECKPOINT", "1", 1);
+    execl(TEHL_BINARY, "tehl", "run", case_path.c_str(), "-o", dir.c_str(), "-q",
+          "--checkpoint-every", "5", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, WUNTRACED), pid);
+  ASSERT_TRUE(WIFSTOPPED(status)) << "the run ended before its first checkpoint";
+  ASSERT_TRUE(std::filesystem::exists(checkpoint)) << "stopped without a checkpoint";
+  ASSERT_EQ(kill(pid, SIGKILL), 0);
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  EXPECT_EQ(WTERMSIG(status), SIGKILL);
 }
 
 }  // namespace tehl::testing
