@@ -91,6 +91,10 @@ int RunGear(const RunArgs& a) {
   NoteThinFilms(r.steps, [](size_t k, const MeshCycleStep& s) {
     return Where("step %zu (s = %.4g mm)", k, s.s_m * 1e3);
   });
+  if (r.thermal)
+    NoteHotFilms(r.steps, !r.non_newtonian, [](size_t k, const MeshCycleStep& s) {
+      return Where("step %zu (s = %.4g mm)", k, s.s_m * 1e3);
+    });
   std::printf("wrote %s%s%s\n", r.hdf5_path.c_str(), r.csv_path.empty() ? "" : " and ",
               r.csv_path.c_str());
   if (!r.converged()) {
@@ -138,6 +142,10 @@ int RunContact(const RunArgs& a) {
   NoteThinFilms(r.steps, [](size_t k, const ContactStepRecord& s) {
     return Where("step %zu (t = %.4g s)", k, s.time_s);
   });
+  if (r.thermal)
+    NoteHotFilms(r.steps, !r.non_newtonian, [](size_t k, const ContactStepRecord& s) {
+      return Where("step %zu (t = %.4g s)", k, s.time_s);
+    });
   std::printf("wrote %s and %s\n", r.profile_csv.c_str(), r.history_csv.c_str());
   if (!r.converged()) {
     ReportFailedSteps(r.steps, [](size_t k, const ContactStepRecord& s) {

@@ -159,6 +159,34 @@ void NoteThinFilms(const std::vector<Step>& steps, Where where) {
       where(thinnest, steps[thinnest]).c_str(), mu);
 }
 
+// Above about 200 C mineral oils oxidize and their light ends evaporate (the flash points of
+// gear and engine oils lie near 200-250 C), and the viscosity-temperature data the lubricant
+// laws are fitted to span about 40-100 C (ASTM D341's two reference temperatures): a film
+// hotter than this is an extrapolation of its laws [K].
+inline constexpr double kHotFilmNote = 473.15;
+
+// The converged steps of a thermal run whose T_max is above kHotFilmNote: how many, the
+// hottest and where (`where(k, step)` names step k); a Newtonian run is pointed at the
+// Ree-Eyring film.
+template <typename Step, typename Where>
+void NoteHotFilms(const std::vector<Step>& steps, bool newtonian, Where where) {
+  size_t count = 0, hottest = 0;
+  for (size_t k = 0; k < steps.size(); ++k) {
+    if (!steps[k].summary.usable() || !(steps[k].t_max_k > kHotFilmNote)) continue;
+    if (count++ == 0 || steps[k].t_max_k > steps[hottest].t_max_k) hottest = k;
+  }
+  if (count == 0) return;
+  std::printf(
+      "note: in %zu of %zu films the oil is hotter than %.0f K (200 C; hottest %.4g K at %s): "
+      "mineral oils oxidize and evaporate there, and the lubricant's laws, fitted to data of "
+      "about 40-100 C, are far extrapolated%s\n",
+      count, steps.size(), kHotFilmNote, steps[hottest].t_max_k,
+      where(hottest, steps[hottest]).c_str(),
+      newtonian ? "; a Newtonian film in sliding overstates its heating ([effects] "
+                  "non_newtonian = true bounds the shear stress)"
+                : "");
+}
+
 // On stderr: the steps that did not converge (the one where the run stopped, and those left
 // behind with failed_step = "steady_restart_or_skip") and why the first one failed.
 template <typename Step, typename Where>

@@ -308,5 +308,30 @@ TEST(RunNotes, AFailedFilmThatClosesSaysSo) {
   EXPECT_NE(r.err.find("the film closes (h <= 0 at"), std::string::npos) << r.err;
 }
 
+// The steel disc of docs/validation.md section 6 at L_T = 5 and SRR = 1 with the Ree-Eyring
+// film: T_max - T0 = 305 K there (that table, 257 nodes), so T_max = 618 K, above the 473 K
+// of the hot-film note; rolling at L_T = 1 (17 K) gets no note.
+TEST(RunNotes, AFilmHotterThan200CIsNoted) {
+  auto disc = [](double u1, double u2) {
+    const std::string path = UniqueTempPath("hot.toml");
+    std::ofstream(path) << "[contact]\nradius_1_m = 0.04\nradius_2_m = 0.04\nspeed_1_m_s = " << u1
+                        << "\nspeed_2_m_s = " << u2
+                        << "\nload_n_per_m = 355238.0\n[lubricant]\nname = \"sae40\"\n"
+                           "[effects]\ntransient = false\nthermal = true\nnon_newtonian = true\n"
+                           "[numerics]\ngrid_points = 257\n[output]\ndirectory = \""
+                        << UniqueTempPath("out") << "\"\n";
+    return path;
+  };
+  const RunResult hot = RunTehl("run -q '" + disc(16.371, 5.457) + "'");
+  ASSERT_TRUE(hot.exited);
+  ASSERT_EQ(hot.exit_code, 0) << hot.out << hot.err;
+  EXPECT_NE(hot.out.find("note: in 1 of 1 films the oil is hotter than 473 K"), std::string::npos)
+      << hot.out;
+  EXPECT_EQ(hot.out.find("Newtonian film in sliding"), std::string::npos) << hot.out;
+  const RunResult cool = RunTehl("run -q '" + disc(4.881, 4.881) + "'");
+  ASSERT_EQ(cool.exit_code, 0) << cool.out << cool.err;
+  EXPECT_EQ(cool.out.find("hotter than"), std::string::npos) << cool.out;
+}
+
 }  // namespace
 }  // namespace tehl::testing
