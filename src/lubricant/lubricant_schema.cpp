@@ -70,8 +70,9 @@ Schema BuildLubricantSchema() {
        "Ree-Eyring shear thinning; needed for effects.non_newtonian",
        false,
        {
-           Required(Real("eyring_stress_pa", "Pa", "", "Eyring stress tau_0", 0.0, 1e9, false),
-                    "5e6"),
+           // Measured Eyring stresses of oils lie between about 0.1 and 20 MPa (Bair & Winer
+           // 1979; Johnson & Tevaarwerk 1977); below 1 kPa the film would be all shear thinning.
+           Required(Real("eyring_stress_pa", "Pa", "", "Eyring stress tau_0", 1e3, 1e9), "5e6"),
            Real(
                "limiting_stress_pa", "Pa", "0.0",
                "limiting shear stress tau_L0 at p = 0 (0 with slope 0: no limit; > 0 with a slope)",
