@@ -195,6 +195,8 @@ void NoteCycleEdges(const MeshCycleResult& r) {
 constexpr double kInletNoteDeficit = 0.005;
 constexpr double kInletTargetDeficit = 0.002;
 constexpr const char* kInletAdvice = "with grid_points raised in proportion (same spacing)";
+// The smallest [numerics] x_start_b the case schema allows [-].
+constexpr double kMinStartB = -100.0;
 
 // A nearly isoviscous film (alpha p_max < kGrubinMinAlphaP) gets no Grubin estimate; its
 // inlet is noted when it starts downstream of -l_iso (InletTruncation::short_isoviscous_inlet).
@@ -202,18 +204,29 @@ void PrintIsoviscousInletNote(const InletTruncation& t,
                               double x_start_b,
                               double x0_m,
                               const std::string& where) {
+  const bool contact = where == "the film";
+  const double needed = x_start_b * t.isoviscous_inlet_m / -x0_m;
+  char advice[320];
+  if (contact)
+    std::snprintf(advice, sizeof advice,
+                  "leave out grid_points and x_start_b (a [contact] case's automatic grid "
+                  "reaches it), or [numerics] x_start_b = %.3g %s",
+                  needed, kInletAdvice);
+  else if (needed >= kMinStartB)
+    std::snprintf(advice, sizeof advice, "[numerics] x_start_b = %.3g %s", needed, kInletAdvice);
+  else
+    std::snprintf(advice, sizeof advice,
+                  "that would be x_start_b = %.3g, beyond the %g a cycle's one grid allows: "
+                  "such a film needs a grid of its own (a [contact] case of its radius, speeds "
+                  "and load)",
+                  needed, kMinStartB);
   std::printf(
       "note: %s is nearly isoviscous (alpha p_max = %.2g, below the %g at which the inlet's "
       "effect can be estimated) and such a film builds its pressure far upstream: its inlet at "
       "x_start_b = %.3g (%.3g mm) reaches %.2g %% of the %.3g mm over which a flooded "
-      "isoviscous film does (Martin), so it is likely much too thin; a longer inlet "
-      "([numerics] x_start_b = %.3g %s%s)\n",
+      "isoviscous film does (Martin), so it is likely much too thin; %s\n",
       where.c_str(), t.alpha_p_max, kGrubinMinAlphaP, x_start_b, -1e3 * x0_m,
-      100 * -x0_m / t.isoviscous_inlet_m, 1e3 * t.isoviscous_inlet_m,
-      x_start_b * t.isoviscous_inlet_m / -x0_m, kInletAdvice,
-      where == "the film" ? "; or leave out grid_points and x_start_b: a [contact] case's "
-                            "automatic grid reaches it"
-                          : "");
+      100 * -x0_m / t.isoviscous_inlet_m, 1e3 * t.isoviscous_inlet_m, advice);
 }
 
 void NoteContactInlet(const InletTruncation& t, double x_start_b, double x0_m) {
