@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <utility>
 
 #include "scene/case_reader.hpp"
 #include "tehl/ehl/inlet_truncation.hpp"
@@ -62,6 +63,20 @@ GridUnits GridUnitsFor(const FilmCase& film,
 
 void CheckRoughnessResolution(Document& doc, const FilmCase& film, double dx_m) {
   if (!film.effects.roughness) return;
+  // A measured profile is one period of its surface: a period shorter than two cells is not
+  // represented either.
+  const std::pair<const char*, const SurfaceShape*> shapes[] = {
+      {"surfaces.surface1", film.surface1.get()}, {"surfaces.surface2", film.surface2.get()}};
+  for (const auto& [section, shape] : shapes) {
+    const auto* profile = dynamic_cast<const MeasuredProfile*>(shape);
+    if (!profile || profile->period_m() >= 2.0 * dx_m) continue;
+    doc.Problem(section, "profile_file",
+                "the profile spans one period of " + FormatShort(profile->period_m()) +
+                    " m, shorter than two cells of the film grid (dx = " + FormatShort(dx_m) +
+                    " m): the grid cannot represent it",
+                "a profile over at least " + FormatShort(2.0 * dx_m) +
+                    " m on this grid, or more [numerics] grid_points");
+  }
   for (const char* section : {"surfaces.surface1", "surfaces.surface2"}) {
     if (!doc.HasSection(section) || doc.String(section, "roughness") != "sinusoidal" ||
         !doc.Given(section, "wavelength_m"))
