@@ -154,6 +154,10 @@ Command AddLubricantCommand(CLI::App& app) {
                           "the viscosity law gives eta = %g Pa s at p = %g Pa, T = %g K: "
                           "beyond the range of numbers",
                           eta.eta_pa_s, pp, t);
+            // At p = 0 it is the temperature that leaves the law's range.
+            if (pp == 0.0)
+              throw InputError(InputProblem{"", 0, "--T", "\"" + t_text + "\"", what,
+                                            "temperatures where the law is finite"});
             throw InputError(InputProblem{"", 0, "--p", "\"" + args->p + "\"", what,
                                           "pressures below that, where the law is finite"});
           }

@@ -204,27 +204,21 @@ void PrintIsoviscousInletNote(const InletTruncation& t,
                               double x_start_b,
                               double x0_m,
                               const std::string& where) {
-  const bool contact = where == "the film";
   const double needed = x_start_b * t.isoviscous_inlet_m / -x0_m;
   char advice[320];
-  if (contact)
-    std::snprintf(advice, sizeof advice,
-                  "leave out grid_points and x_start_b (a [contact] case's automatic grid "
-                  "reaches it), or [numerics] x_start_b = %.3g %s",
-                  needed, kInletAdvice);
-  else if (needed >= kMinStartB)
+  if (needed >= kMinStartB)
     std::snprintf(advice, sizeof advice, "[numerics] x_start_b = %.3g %s", needed, kInletAdvice);
   else
     std::snprintf(advice, sizeof advice,
-                  "that would be x_start_b = %.3g, beyond the %g a cycle's one grid allows: "
-                  "such a film needs a grid of its own (a [contact] case of its radius, speeds "
-                  "and load)",
+                  "that would be x_start_b = %.3g, beyond the %g allowed: such a film needs "
+                  "a grid of its own (a [contact] case of its radius, speeds and load, whose "
+                  "default inlet reaches it)",
                   needed, kMinStartB);
   std::printf(
       "note: %s is nearly isoviscous (alpha p_max = %.2g, below the %g at which the inlet's "
       "effect can be estimated) and such a film builds its pressure far upstream: its inlet at "
       "x_start_b = %.3g (%.3g mm) reaches %.2g %% of the %.3g mm over which a flooded "
-      "isoviscous film does (Martin), so it is likely much too thin; %s\n",
+      "isoviscous film does (Martin), so it is likely too thin; %s\n",
       where.c_str(), t.alpha_p_max, kGrubinMinAlphaP, x_start_b, -1e3 * x0_m,
       100 * -x0_m / t.isoviscous_inlet_m, 1e3 * t.isoviscous_inlet_m, advice);
 }
@@ -245,9 +239,16 @@ void NoteContactInlet(const InletTruncation& t, double x_start_b, double x0_m) {
 
 void NoteCycleInlet(const MeshCycleResult& r) {
   const std::vector<InletTruncation> inlet = r.InletTruncations();
+  // The lightly loaded ends of a relieved path (down to 1 % of F_bt) are nearly isoviscous
+  // whatever the case: only films carrying a tenth of the cycle's largest load count.
+  double w_max = 0;
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    if (Usable(r, k)) w_max = std::max(w_max, r.steps[k].load_n_per_m);
   size_t short_count = 0, shortest = inlet.size();
   for (size_t k = 0; k < r.steps.size() && k < inlet.size(); ++k) {
-    if (!Usable(r, k) || inlet[k].estimated || !inlet[k].short_isoviscous_inlet) continue;
+    if (!Usable(r, k) || inlet[k].estimated || !inlet[k].short_isoviscous_inlet ||
+        r.steps[k].load_n_per_m < 0.1 * w_max)
+      continue;
     ++short_count;
     if (shortest == inlet.size() ||
         inlet[k].isoviscous_inlet_m > inlet[shortest].isoviscous_inlet_m)

@@ -131,6 +131,14 @@ void NoteTimeError(const std::vector<Step>& steps, Where where) {
       where(worst, steps[worst]).c_str());
 }
 
+// The converged steps of a run's step list.
+template <typename Step>
+size_t UsableCount(const std::vector<Step>& steps) {
+  size_t n = 0;
+  for (const Step& s : steps) n += s.summary.usable();
+  return n;
+}
+
 // A film thinner than this is a few molecular layers thick: the boundary films that
 // lubricant additives form on steel are tens of nm thick (Spikes 2004, Tribol. Lett. 17:469,
 // on ZDDP films), so below it the surfaces' asperities and those films carry load that the
@@ -155,14 +163,14 @@ void NoteThinFilms(const std::vector<Step>& steps, Where where) {
       "are in asperity (mixed) contact, which tehl does not model; the continuum film there, "
       "and its friction (up to mu = %.3g), describe no real contact (rougher surfaces need "
       "a thicker film: lower load, higher speed or a more viscous oil)\n",
-      count, steps.size(), 1e9 * kThinFilmNote, 1e9 * steps[thinnest].h_min_m,
+      count, UsableCount(steps), 1e9 * kThinFilmNote, 1e9 * steps[thinnest].h_min_m,
       where(thinnest, steps[thinnest]).c_str(), mu);
 }
 
 // Above about 200 C mineral oils oxidize and their light ends evaporate (the flash points of
 // gear and engine oils lie near 200-250 C), and the viscosity-temperature data the lubricant
-// laws are fitted to span about 40-100 C (ASTM D341's two reference temperatures): a film
-// hotter than this is an extrapolation of its laws [K].
+// laws are fitted to span about 40-100 C (the reference temperatures of ISO 3448 and ASTM
+// D2270): a film hotter than this is an extrapolation of its laws [K].
 inline constexpr double kHotFilmNote = 473.15;
 
 // The converged steps of a thermal run whose T_max is above kHotFilmNote: how many, the
@@ -180,7 +188,7 @@ void NoteHotFilms(const std::vector<Step>& steps, bool newtonian, Where where) {
       "note: in %zu of %zu films the oil is hotter than %.0f K (200 C; hottest %.4g K at %s): "
       "mineral oils oxidize and evaporate there, and the lubricant's laws, fitted to data of "
       "about 40-100 C, are far extrapolated%s\n",
-      count, steps.size(), kHotFilmNote, steps[hottest].t_max_k,
+      count, UsableCount(steps), kHotFilmNote, steps[hottest].t_max_k,
       where(hottest, steps[hottest]).c_str(),
       newtonian ? "; a Newtonian film in sliding overstates its heating ([effects] "
                   "non_newtonian = true bounds the shear stress)"

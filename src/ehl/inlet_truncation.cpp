@@ -43,7 +43,9 @@ InletTruncation EstimateInletTruncation(const Eigen::VectorXd& p_pa,
   out.alpha_p_max = in.pressure_viscosity_per_pa * p_pa.maxCoeff();
   if (!(out.alpha_p_max >= kGrubinMinAlphaP)) {
     out.isoviscous_inlet_m = IsoviscousInletLength(r, b, um, eta, in.load_n_per_m);
-    out.short_isoviscous_inlet = -x0 < out.isoviscous_inlet_m;
+    // Martin's load at l_iso is within 0.1 % of its limit and the deficit of a shorter inlet
+    // grows about as (l_iso / |x0|)^2: only an inlet shorter than half of it is noted.
+    out.short_isoviscous_inlet = -x0 < kShortIsoviscousInlet * out.isoviscous_inlet_m;
     return out;
   }
   // h* from the flux at x0 (p = 0 there, so eta and rho are the inlet's): q / (rho um) =

@@ -58,11 +58,12 @@ class LineContactSolver::Impl {
 
   Scales ScalesFor(const ContactConditions& c) const;
   double EstimateCentralFilm(const ContactConditions& c) const;
+  // For a failed solve with roughness: when the surfaces' heights span more than the smooth
+  // film of the conditions, a sentence saying so for its message; "" otherwise.
+  std::string RoughnessHint(const ContactConditions& c, const FilmState& s) const;
   // For the message of a failed steady solve: when the grid does not span the Hertzian edge of
   // the film that Moes' fit estimates (hertz_edge.hpp), says so and how many nodes would;
   // else empty.
-  // A failed solve's film that closes (h <= 0 somewhere): where, for its message; "" else.
-  std::string TouchHint(const FilmState& s) const;
   std::string EdgeHint(const ContactConditions& c) const;
   // `clock`: the state whose time and travel the guess takes (rough surfaces are sampled at
   // the travel); null = time and travel 0.

@@ -13,6 +13,7 @@
 #include "base/schema.hpp"
 #include "ehl/line_contact_impl.hpp"
 #include "tehl/ehl/hertz_edge.hpp"
+#include "tehl/ehl/surface_roughness.hpp"
 #include "tehl/units.hpp"
 
 namespace tehl {
@@ -329,9 +330,9 @@ LineContactSolver::Summary LineContactSolver::Impl::Solve(const ContactCondition
         sum.message += "; the film left is that of the last stage that converged, at " +
                        internal::FormatReal(theta_good) + " of the load";
       if (!s->valid()) *s = start;
-      sum.message += TouchHint(*s);
     }
   }
+  if (!sum.usable()) sum.message += RoughnessHint(c, *s);
   sum.total_iterations = total;
   sum.krylov_iterations = krylov;
   sum.continuation_stages = stages;
@@ -341,15 +342,25 @@ LineContactSolver::Summary LineContactSolver::Impl::Solve(const ContactCondition
   return sum;
 }
 
-std::string LineContactSolver::Impl::TouchHint(const FilmState& s) const {
-  if (!s.valid()) return "";
-  const Eigen::Index closed = (s.h_m.array() <= 0.0).count();
-  if (closed == 0) return "";
-  return "; the film closes (h <= 0 at " + std::to_string(closed) + " of " +
-         std::to_string(s.h_m.size()) + " nodes, down to " +
-         internal::FormatShort(s.h_m.minCoeff()) +
-         " m): the roughness or the load leave no full film there, and asperity contact is "
-         "not modelled";
+std::string LineContactSolver::Impl::RoughnessHint(const ContactConditions& c,
+                                                   const FilmState& s) const {
+  if (!eff_.roughness || (!s1_ && !s2_)) return "";
+  // The surfaces' combined height over the grid at the state's travel, peak to valley,
+  // against the smooth film these conditions carry (EstimateCentralFilm).
+  double lo = 0, hi = 0;
+  for (int i = 0; i < grid_.size(); ++i) {
+    const double z = (s1_ ? s1_->Height(grid_.x(i), s.travel1_m) : 0.0) +
+                     (s2_ ? s2_->Height(grid_.x(i), s.travel2_m) : 0.0);
+    lo = i ? std::min(lo, z) : z;
+    hi = i ? std::max(hi, z) : z;
+  }
+  const double film = EstimateCentralFilm(c);
+  if (!(hi - lo > film)) return "";
+  return "; the roughness spans " + internal::FormatShort(hi - lo) +
+         " m peak to valley on the grid, more than the smooth film these conditions carry "
+         "(about " +
+         internal::FormatShort(film) +
+         " m): no full film may separate the surfaces, and asperity contact is not modelled";
 }
 
 std::string LineContactSolver::Impl::EdgeHint(const ContactConditions& c) const {

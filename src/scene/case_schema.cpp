@@ -158,9 +158,11 @@ SectionSpec NumericsSection() {
                   "nodes across the contact; 0 = automatic: from 513 up to what the narrowest "
                   "Hertzian edge of the run needs (docs/case_format.md)",
                   0.0, 1e6),
-          Real("x_start_b", "-", "-4.5", "inlet end of the grid in Hertz half-widths b", -100.0,
-               -1.0),
-          Real("x_end_b", "-", "1.5", "outlet end of the grid in Hertz half-widths b", 1.0, 50.0),
+          Real("x_start_b", "-", "-4.5",
+               "inlet end of the grid in Hertz half-widths b (rigid and light, nearly "
+               "isoviscous films: longer units, docs/case_format.md)",
+               -100.0, -1.0),
+          Real("x_end_b", "-", "1.5", "outlet end of the grid in the same units", 1.0, 50.0),
           Integer("steps", "-", "0", "time steps from A to E; 0 = automatic", 0.0, 1e7),
           Integer("upwind_order", "-", "2", "order of the Couette (wedge) term upwinding", 1.0,
                   2.0),

@@ -104,7 +104,7 @@ void CheckFilmScale(Document& doc, const ContactInputs& in, const FilmCase& film
                           : "load_n_per_m";
     doc.Problem("contact", key,
                 "a load of " + FormatShort(w) + " N/m at um = " + FormatShort(um) +
-                    " m/s carries a film of about " + FormatShort(h_martin) +
+                    " m/s carries a film of at least " + FormatShort(h_martin) +
                     " m (Martin's rigid film 4.896 eta0 um R / w) against R = " + FormatShort(r) +
                     " m: Reynolds' thin-film theory needs h << R",
                 "loads >= " + FormatShort(kMartinFilm * eta0 * um / kMaxFilmToRadius) +

@@ -8,6 +8,7 @@
 #include "scene/case_reader.hpp"
 #include "tehl/ehl/inlet_truncation.hpp"
 #include "tehl/error.hpp"
+#include "tehl/units.hpp"
 
 namespace tehl::internal {
 namespace {
@@ -52,10 +53,15 @@ GridUnits GridUnitsFor(const FilmCase& film,
     const double l = std::sqrt(2.0 * r_m * h0);
     return {kRigidInletUnit * l, kRigidOutletUnit * l};
   }
-  // Elastic films: b, unless the film is nearly rigid (h_M R / b^2 ~ 1/M^2 not small): its
-  // inlet reaches -l_iso at the default x_start_b (IsoviscousInletLength,
+  // Elastic films: b, unless the film is nearly isoviscous (alpha p_H below the Grubin regime
+  // of the inlet estimate) and nearly rigid (h_M R / b^2 ~ 1/M^2 not small): its inlet then
+  // reaches -l_iso at the default x_start_b (IsoviscousInletLength,
   // include/tehl/ehl/inlet_truncation.hpp: the rigid film's 40 sqrt(2 R h_M) weighted by that
   // ratio, at most R/2), its outlet as far as the rigid film's in proportion.
+  const ViscosityValue inlet = film.lubricant->viscosity().Evaluate(0.0, film.inlet_temperature_k);
+  const double p_hertz = b_m > 0 ? 2.0 * w_n_per_m / (kPi * b_m) : 0.0;
+  if (film.effects.piezoviscous && inlet.deta_dp / inlet.eta_pa_s * p_hertz >= kGrubinMinAlphaP)
+    return {b_m, b_m};
   const double l_iso = IsoviscousInletLength(r_m, b_m, um_m_s, eta0, w_n_per_m);
   const double unit = kRigidInletUnit * l_iso / kIsoviscousInletLengths;
   return {std::max(b_m, unit), std::max(b_m, unit * kRigidOutletUnit / kRigidInletUnit)};

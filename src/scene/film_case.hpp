@@ -64,7 +64,8 @@ GridUnits GridUnitsFor(const FilmCase& film,
                        bool isoviscous_inlet = true);
 
 // Martin's rigid isoviscous film h = 4.896 eta0 um R / w (VALIDATION.md section 2) bounds
-// the film of a light load from above; Reynolds' equation is a thin-film theory (h / l =
+// the film from below (elasticity and piezoviscosity only thicken it); Reynolds' equation is
+// a thin-film theory (h / l =
 // sqrt(h / 2R) << 1 over the film's length l = sqrt(2 R h)), so a load whose Martin film
 // exceeds kMaxFilmToRadius R is reported at its key (a load of 1e-100 N/m otherwise gives an
 // infinite film) [-].

@@ -111,11 +111,6 @@ bool CheckTipReliefKeys(Document& doc, const GearCase& c, double g) {
       std::snprintf(allowed, sizeof allowed, "tip_relief_length_m in (0, %.4g] [m] (g_alpha)", g);
       doc.Problem(member, "tip_relief_length_m", "a tip relief needs its length", allowed);
       ok = false;
-    } else if (!(amount > 0) && doc.Given(member, "tip_relief_length_m")) {
-      doc.Problem(member, "tip_relief_length_m",
-                  "a relief length without a relief amount does nothing (tip_relief_m is 0)",
-                  "tip_relief_m > 0 with it, or no tip_relief_length_m");
-      ok = false;
     } else if (amount > 0 && length > g) {
       std::snprintf(allowed, sizeof allowed, "tip_relief_length_m <= %.4g [m]", g);
       doc.Problem(member, "tip_relief_length_m",

@@ -349,8 +349,12 @@ void CheckpointWriter::Remove() const {
 namespace {
 
 std::optional<std::vector<char>> ReadPrefix(const std::string& path, std::int64_t bytes) {
+  // The size first: a damaged count must not become a huge allocation.
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec || bytes < 0 || static_cast<std::uintmax_t>(bytes) > size) return std::nullopt;
   std::ifstream f(path, std::ios::binary);
-  if (!f || bytes < 0) return std::nullopt;
+  if (!f) return std::nullopt;
   std::vector<char> b(static_cast<size_t>(bytes));
   f.read(b.data(), bytes);
   if (f.gcount() != bytes) return std::nullopt;
@@ -462,12 +466,13 @@ std::optional<MeshCycleCheckpoint> Read(const std::string& path) {
   std::optional<std::vector<char>> rows = ReadPrefix(rows_path, c.journal_bytes);
   if (!rows)
     throw Unusable("its rows file " + rows_path + " is shorter than the checkpoint records");
-  if (std::memcmp(rows->data(), kRowsMagic, sizeof kRowsMagic) != 0)
-    throw Unusable("its rows file " + rows_path + " is not of this version of tehl");
+  // The checksum first: a damaged header is damage, not another version.
   if (Fnv1a(rows->data(), rows->size()) != c.journal_checksum)
     throw Unusable("its rows file " + rows_path +
                    " is damaged or belongs to another run (its checksum does not match the "
                    "one the checkpoint records)");
+  if (std::memcmp(rows->data(), kRowsMagic, sizeof kRowsMagic) != 0)
+    throw Unusable("its rows file " + rows_path + " is not of this version of tehl");
   try {
     In j(std::move(*rows));
     char magic[8];

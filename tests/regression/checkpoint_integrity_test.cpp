@@ -119,7 +119,7 @@ TEST(CheckpointIntegrity, ADamagedCheckpointIsNotUsed) {
   ExpectFreshResult(k, r);
 }
 
-// The D3 reproducer: a NaN written over a value of the checkpoint.
+// The NaN written into a checkpoint: a NaN written over a value of the checkpoint.
 TEST(CheckpointIntegrity, ANanWrittenIntoTheCheckpointIsFound) {
   const Killed k = KilledAfterCheckpoint(SmallCase(), TempDirFor("ck_nan"));
   WriteNan(k.checkpoint, fs::file_size(k.checkpoint) / 2);

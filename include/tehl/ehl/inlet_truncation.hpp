@@ -26,7 +26,7 @@
 // the weight fading as elasticity takes over (h_M R / b^2 ~ 1/M^2, Moes' load parameter M);
 // beyond R/2 the gap is no longer the parabola x^2/(2R) (7 % off there) and a real inlet is
 // wherever the oil meets the gap, which a flooded inlet does not describe,
-// and `short_isoviscous_inlet` says when the grid starts downstream of -l_iso. (The automatic
+// and `short_isoviscous_inlet` says when the grid starts downstream of -l_iso / 2. (The automatic
 // grid of case files starts there: scene/film_case.cpp.)
 #pragma once
 
@@ -54,7 +54,8 @@ struct InletTruncation {
   double alpha_p_max = 0;          // alpha p_max of the film: no estimate below
                                    //   kGrubinMinAlphaP [-]
   double isoviscous_inlet_m = 0;   // l_iso (above); 0 when unknown [m]
-  bool short_isoviscous_inlet = false;  // alpha p_max < kGrubinMinAlphaP and -x0 < l_iso
+  bool short_isoviscous_inlet = false;  // alpha p_max < kGrubinMinAlphaP and -x0 below
+                                        //   kShortIsoviscousInlet l_iso
   // The inlet x0' (same units as x0) at which the deficit would be `target`: p_in ~ |x0|^-3.
   double InletFor(double x0, double target) const;
 };
@@ -73,6 +74,8 @@ constexpr double kGrubinMinAlphaP = 5.0;
 constexpr double kIsoviscousInletLengths = 40.0;
 // ... and at most this many R [-].
 constexpr double kIsoviscousInletMaxRadii = 0.5;
+// An inlet shorter than this part of l_iso is noted as short [-].
+constexpr double kShortIsoviscousInlet = 0.5;
 
 // l_iso above for a film of half-width b (0: rigid) [m]; 0 when an input is not positive.
 double IsoviscousInletLength(double reduced_radius_m,

@@ -292,8 +292,8 @@ TEST(RunNotes, ANearlyIsoviscousCycleWithAShortInletIsNoted) {
 // A waviness of 2 um on a disc whose smooth film is about 0.7 um (the disc of
 // cases/disc_steady.toml, R = 10 mm, 100 kN/m, um = 1 m/s; docs/validation.md section 3):
 // no full film carries the load, the solve fails (exit 1), and its message says that the
-// film closes rather than only that the line search stalled.
-TEST(RunNotes, AFailedFilmThatClosesSaysSo) {
+// roughness exceeds the film rather than only that the line search stalled.
+TEST(RunNotes, AFailedRoughFilmSaysTheRoughnessExceedsTheFilm) {
   const std::string path = UniqueTempPath("closing.toml");
   std::ofstream(path) << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nspeed_1_m_s = 1.1\n"
                          "speed_2_m_s = 0.9\nload_n_per_m = 1.0e5\ntime_s = [0.0, 2.0e-4]\n"
@@ -305,7 +305,8 @@ TEST(RunNotes, AFailedFilmThatClosesSaysSo) {
   const RunResult r = RunTehl("run -q '" + path + "'");
   ASSERT_TRUE(r.exited);
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-  EXPECT_NE(r.err.find("the film closes (h <= 0 at"), std::string::npos) << r.err;
+  // Peak to valley 2 x 2 um = 4 um against Moes' smooth film of about 0.8 um.
+  EXPECT_NE(r.err.find("the roughness spans 4e-06 m peak to valley"), std::string::npos) << r.err;
 }
 
 // The steel disc of docs/validation.md section 6 at L_T = 5 and SRR = 1 with the Ree-Eyring
@@ -331,6 +332,31 @@ TEST(RunNotes, AFilmHotterThan200CIsNoted) {
   const RunResult cool = RunTehl("run -q '" + disc(4.881, 4.881) + "'");
   ASSERT_EQ(cool.exit_code, 0) << cool.out << cool.err;
   EXPECT_EQ(cool.out.find("hotter than"), std::string::npos) << cool.out;
+}
+
+// A nearly isoviscous disc film (694 N/m, p_H = 50 MPa, alpha p_max = 0.03; its default
+// inlet reaches the isoviscous inlet length l_iso = R/2, tests/unit/scene/
+// automatic_grid_test.cpp) with x_start_b = -1, a fifth of that, gets the short-inlet note and
+// the x_start_b (-4.5) that reaches it; the default inlet gets none.
+TEST(RunNotes, AShortInletOfANearlyIsoviscousDiscIsNoted) {
+  auto disc = [](const std::string& numerics) {
+    const std::string path = UniqueTempPath("light.toml");
+    std::ofstream(path) << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nspeed_1_m_s = 1.0\n"
+                           "speed_2_m_s = 1.0\nload_n_per_m = 694.0\n[lubricant]\n"
+                           "name = \"sae40\"\n[effects]\ntransient = false\n[numerics]\n"
+                        << numerics << "\n[output]\ndirectory = \"" << UniqueTempPath("out")
+                        << "\"\n";
+    return path;
+  };
+  const RunResult r = RunTehl("run -q '" + disc("x_start_b = -1.0") + "'");
+  ASSERT_TRUE(r.exited);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("note: the film is nearly isoviscous"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("[numerics] x_start_b = -4.5 with grid_points raised"), std::string::npos)
+      << r.out;
+  const RunResult d = RunTehl("run -q '" + disc("") + "'");
+  ASSERT_EQ(d.exit_code, 0) << d.out << d.err;
+  EXPECT_EQ(d.out.find("nearly isoviscous"), std::string::npos) << d.out;
 }
 
 }  // namespace

@@ -100,7 +100,8 @@ TEST(AutomaticGrid, ARigidFilmGetsTheSmallestGrid) {
 // thousand times b^2/R, so the film is nearly rigid and builds its pressure over millimetres.
 // The grid's inlet then reaches R/2 instead of -4.5 b = -40 um, and the film is Martin's
 // within 3 % (its elastic deflection and piezoviscosity, alpha p_max = 0.03, are small); on
-// -4.5 b it was 0.31 um. An explicit, short inlet is noted (tests/unit/cli/run_notes_test.cpp).
+// -4.5 b it was 0.31 um. A shorter inlet is noted
+// (RunNotes.AShortInletOfANearlyIsoviscousDiscIsNoted).
 TEST(AutomaticGrid, ANearlyRigidLightFilmGetsAnInletLongEnoughForMartinsFilm) {
   const double load = 694.0, speed = 1.0, r = 0.01, eta0 = 0.1140574;
   const ContactRunResult film = RunDisc(Disc("light", load, speed, ""));
