@@ -35,10 +35,11 @@ std::vector<double> ParseSpeeds(const std::string& text) {
   const bool parsed =
       static_cast<bool>(in >> a >> c1 >> b >> c2 >> h) && c1 == ':' && c2 == ':' && !(in >> extra);
   const double count = parsed && h > 0 ? std::floor((b - a) / h + 1e-9) + 1 : 0;
-  if (!parsed || !(a > 0) || !(b >= a) || !(h > 0) || count > 100000)
-    throw InputError(InputProblem{"", 0, "--speeds", text,
-                                  "must be FROM:TO:STEP in rpm with 0 < FROM <= TO, STEP > 0 and "
-                                  "at most 100000 speeds",
+  // 1e6 rpm: beyond every gear drive (turbine gears run up to about 1e5 rpm).
+  if (!parsed || !(a > 0) || !(b >= a) || !(b <= 1e6) || !(h > 0) || count > 100000)
+    throw InputError(InputProblem{"", 0, "--speeds", "\"" + text + "\"",
+                                  "must be FROM:TO:STEP in rpm with 0 < FROM <= TO <= 1e6, "
+                                  "STEP > 0 and at most 100000 speeds",
                                   "e.g. 500:20000:100"});
   std::vector<double> v;
   for (int i = 0; i < static_cast<int>(count); ++i) v.push_back(a + i * h);
@@ -136,17 +137,18 @@ Command AddDynamicsCommand(CLI::App& app) {
       "Torsional dynamics of the gear pair of a case: natural and mesh frequencies, dynamic "
       "mesh force and tooth load, dynamic load factor against speed");
   sub->add_option("CASE", args->case_file, "Case file with [gear] and [operating]")->required();
-  sub->add_option("--speeds", args->speeds,
-                  "Pinion speed sweep FROM:TO:STEP [rpm], e.g. 500:20000:100: writes "
-                  "NAME_dynamics_sweep.csv and NAME_dynamics.png");
+  CLI::Option* speeds_option =
+      sub->add_option("--speeds", args->speeds,
+                      "Pinion speed sweep FROM:TO:STEP [rpm], e.g. 500:20000:100: writes "
+                      "NAME_dynamics_sweep.csv and NAME_dynamics.png");
   sub->add_option("-o,--output-dir", args->output_dir,
                   "Folder for the files (default: [output] directory of the case)");
   sub->add_option("--threads", args->threads, "Threads for the sweep")->check(CLI::Range(1, 256));
   sub->add_flag("--no-plot", args->no_plot, "Write the CSV files only");
   return {
-      sub, [args]() {
+      sub, [args, speeds_option]() {
         std::vector<double> speeds;
-        if (!args->speeds.empty()) speeds = ParseSpeeds(args->speeds);
+        if (!args->speeds.empty() || speeds_option->count() > 0) speeds = ParseSpeeds(args->speeds);
         internal::Document doc = internal::ReadCaseDocument(args->case_file);
         std::optional<internal::GearCase> c = internal::ReadGearCase(doc);
         doc.ThrowIfProblems();

@@ -294,8 +294,8 @@ Command AddGearCommand(CLI::App& app) {
                   "Write the along-path table (s, t, rho1, rho2, R, u1, u2, um, SRR, sliding, "
                   "k_pair, k_mesh, share, w, r1, r2, pairs in contact; SI units in the header)");
   sub->add_option("--profile", args->profile, "Write tooth profile points (gear, flank, x_m, y_m)");
-  sub->add_option("--points", args->points, "Samples from A to E in --csv (>= 2)")
-      ->check(CLI::Range(2, 1000000));
+  sub->add_option("--points", args->points, "Samples from A to E in --csv (2 ... 100000)")
+      ->check(CLI::Range(2, 100000));
   sub->add_option("--mu", args->mu,
                   "Friction coefficient for Blok's flash temperature along the path (printed; "
                   "with --csv also the column dT_flash_blok_k)")

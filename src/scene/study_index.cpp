@@ -90,6 +90,14 @@ std::string DatasetName(std::string label) {
 
 }  // namespace
 
+bool IsIndexColumnName(const std::string& name) {
+  for (const char* own : {"scene", "steps", "status", "computed", "result", "message"})
+    if (name == own) return true;
+  for (const SummaryColumn& c : SummaryColumns())
+    if (name == c.csv || name == c.hdf5) return true;
+  return false;
+}
+
 SceneRow FailedSceneRow(const StudyScene& scene, const std::string& what) {
   SceneRow r;
   r.scene = scene.id;

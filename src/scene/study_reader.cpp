@@ -9,6 +9,7 @@
 #include <toml.hpp>
 
 #include "tehl/scene/case_schema.hpp"
+#include "tehl/scene/study_index.hpp"
 
 namespace tehl::internal {
 namespace {
@@ -308,7 +309,7 @@ StudyFile ReadStudyFile(const std::string& path) {
                       "must be an array of tables", "[[vary]] entries with key and values"});
       } else {
         int n = 0;
-        std::set<std::string> seen;
+        std::set<std::string> seen, labels;
         for (const auto& t : v->second.as_array()) {
           ++n;
           if (!t.is_table()) continue;
@@ -317,6 +318,18 @@ StudyFile ReadStudyFile(const std::string& path) {
               problems.Add({path, p->line, "vary[" + std::to_string(n) + "].key",
                             FormatValue(Value(p->key)), "the key is varied twice",
                             "each case key in one [[vary]] entry"});
+              continue;
+            }
+            // Labels name the index's columns and datasets (/parameters/LABEL): unique, and
+            // none of the index's own columns.
+            if (IsIndexColumnName(p->label) || !labels.insert(p->label).second) {
+              problems.Add({path, p->line, "vary[" + std::to_string(n) + "].label",
+                            FormatValue(Value(p->label)),
+                            IsIndexColumnName(p->label)
+                                ? "is the name of a column the index writes itself"
+                                : "is the label of another [[vary]] entry",
+                            "a label (or key) of its own, not scene, steps, status, computed, "
+                            "result or a summary column"});
               continue;
             }
             f.parameters.push_back(std::move(*p));

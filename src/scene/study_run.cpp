@@ -4,18 +4,55 @@
 #include <chrono>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <mutex>
+#include <sstream>
+#include <string>
 #include <thread>
 
+#include "scene/mesh_cycle_checkpoint.hpp"
 #include "tehl/scene/contact_scene.hpp"
 #include "tehl/scene/mesh_cycle_scene.hpp"
 
 namespace tehl {
 
+namespace {
+
+// The fingerprint of a scene's case file, kept beside its result as RESULT.case: --resume
+// reuses a result only when the scene it was made from is the scene asked for (a folder of
+// another study, or of an edited one, holds results of other scenes under the same names).
+std::string SceneFingerprint(const StudyScene& scene) {
+  std::ifstream in(scene.case_path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return std::to_string(internal::CaseFingerprint(text.str()));
+}
+
+std::string FingerprintPath(const std::string& result) { return result + ".case"; }
+
+bool SameScene(const std::string& result, const StudyScene& scene) {
+  std::ifstream in(FingerprintPath(result));
+  std::string stored;
+  return std::getline(in, stored) && stored == SceneFingerprint(scene);
+}
+
+void KeepFingerprint(const std::string& result, const StudyScene& scene) {
+  const std::string path = FingerprintPath(result), part = path + ".part";
+  {
+    std::ofstream out(part);
+    out << SceneFingerprint(scene) << "\n";
+    if (!out) return;  // resume then runs the scene again: nothing is lost
+  }
+  std::error_code ec;
+  std::filesystem::rename(part, path, ec);
+}
+
+}  // namespace
+
 SceneRow RunStudyScene(const Study& study, const StudyScene& scene, bool resume) {
   const std::string result = study.ResultPath(scene);
   std::error_code ec;
-  if (resume && std::filesystem::is_regular_file(result, ec)) {
+  if (resume && std::filesystem::is_regular_file(result, ec) && SameScene(result, scene)) {
     // Results are renamed to their final name only when complete: the file is the scene.
     try {
       SceneRow r = ReadSceneRow(study, scene);
@@ -25,6 +62,11 @@ SceneRow RunStudyScene(const Study& study, const StudyScene& scene, bool resume)
       // Unreadable: run the scene again below.
     }
   }
+  // The scene is (re)run: a result of another scene under its name goes first, and the
+  // fingerprint is kept before the run, so that a result that appears belongs to it (a sweep
+  // killed at any moment leaves either no result or this scene's).
+  std::filesystem::remove(result, ec);
+  KeepFingerprint(result, scene);
   const auto t0 = std::chrono::steady_clock::now();
   try {
     // The row of a finished scene comes from its result file alone (wall time included: the

@@ -132,6 +132,33 @@ long long MtimeNs(const std::string& path) {
   return static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec;
 }
 
+// --resume in the folder of another study (same scene names, other scenes) must not read the
+// other study's results back as its own: each result keeps the fingerprint of its scene's
+// case file, and a result of another scene is run again. The index then equals that of the
+// study run in a folder of its own.
+TEST(Sweep, ResumeInTheFolderOfAnotherStudyRunsItsOwnScenes) {
+  const std::string first = testing::ReducedStudy(
+      "sweep_other_a", "[[vary]]\nkey = \"operating.power_w\"\nvalues = [10000.0]\n");
+  const std::string second = testing::ReducedStudy(
+      "sweep_other_b", "[[vary]]\nkey = \"operating.power_w\"\nvalues = [4000.0]\n");
+  const std::string shared = OutDir(first), own = OutDir(second);
+  ASSERT_EQ(testing::RunTehl("sweep -q -o '" + shared + "' '" + first + "'").exit_code, 0);
+  const testing::RunResult r =
+      testing::RunTehl("sweep --resume -q -o '" + shared + "' '" + second + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  ASSERT_EQ(testing::RunTehl("sweep -q -o '" + own + "' '" + second + "'").exit_code, 0);
+  const testing::IndexTable resumed = ReadIndex(shared + "/index.h5");
+  const testing::IndexTable fresh = ReadIndex(own + "/index.h5");
+  ASSERT_EQ(resumed.scene.size(), 1u);
+  ASSERT_EQ(fresh.scene.size(), 1u);
+  EXPECT_EQ(resumed.computed[0], 1.0);
+  EXPECT_NEAR(resumed.h_min_min[0], fresh.h_min_min[0], 1e-9 * fresh.h_min_min[0]);
+  // A second --resume of the same study reuses its own result.
+  ASSERT_EQ(testing::RunTehl("sweep --resume -q -o '" + shared + "' '" + second + "'").exit_code,
+            0);
+  EXPECT_EQ(ReadIndex(shared + "/index.h5").computed[0], 0.0);
+}
+
 TEST(Sweep, ResumeAfterKillRunsOnlyTheUnfinishedScenes) {
   const std::string study = testing::ReducedStudy(
       "sweep_resume",

@@ -56,4 +56,8 @@ std::vector<SceneRow> SceneRowsFromText(const std::string& text);
 // .part file renamed when complete. Returns the two paths.
 std::vector<std::string> WriteStudyIndex(const Study& study, std::vector<SceneRow> rows);
 
+// Whether `name` is a column (CSV) or dataset (HDF5) the index writes itself: scene, steps,
+// status, computed, result or a summary column. A [[vary]] label must not be one.
+bool IsIndexColumnName(const std::string& name);
+
 }  // namespace tehl

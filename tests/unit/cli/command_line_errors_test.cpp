@@ -120,6 +120,19 @@ TEST(CommandLineErrors, ALubricantTableBeyondTheLawsRangeIsRefused) {
   EXPECT_EQ(r.out.find("inf"), std::string::npos) << r.out;
 }
 
+// `tehl dynamics --speeds` given empty, or beyond 1e6 rpm, is refused at --speeds (it used to
+// skip the sweep silently, or to print a factor of 0 at 1e300 rpm).
+TEST(CommandLineErrors, ADynamicsSweepOutsideGearSpeedsIsRefused) {
+  for (const char* speeds : {"''", "1e300:1e301:1e300"}) {
+    const testing::RunResult r = testing::RunTehl(
+        "dynamics '" + SourcePath("cases/seed004_sae40_dynamic.toml") + "' --no-plot -o '" +
+        testing::UniqueTempPath("dyn") + "' --speeds " + speeds);
+    ASSERT_TRUE(r.exited) << speeds;
+    EXPECT_EQ(r.exit_code, 2) << speeds << "\n" << r.err;
+    EXPECT_NE(r.err.find("--speeds"), std::string::npos) << r.err;
+  }
+}
+
 TEST(CommandLineErrors, ASpeedOfTheWrongTypeIsNotAlsoReportedMissing) {
   const std::string path = testing::UniqueTempPath("string_speed.toml");
   std::ofstream(path) << GearCase("pinion_speed_rpm = \"1000 rpm\"");
