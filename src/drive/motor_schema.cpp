@@ -22,7 +22,10 @@ std::vector<KeySpec> MotorKeys() {
       Required(Text("type", "", "DC motor type (seed 001 section 3)",
                     {"separately_excited", "shunt", "permanent_magnet", "series"}),
                "\"shunt\""),
-      Required(Positive("supply_voltage_v", "V", "", "terminal (supply) voltage E"), "220.0"),
+      // Up to 1e5 V: DC drives run at most a few kV (traction); beyond, stall torque and power
+      // leave the range of numbers.
+      Required(Real("supply_voltage_v", "V", "", "terminal (supply) voltage E", 0.0, 1e5, false),
+               "220.0"),
       Required(Positive("armature_resistance_ohm", "Ohm", "",
                         "armature circuit resistance R_a (series: with the series field)"),
                "0.5"),
