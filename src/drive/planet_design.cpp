@@ -8,6 +8,15 @@
 #include "tehl/units.hpp"
 
 namespace tehl {
+namespace {
+
+// A multiple of 1/2 as "18" or "18.5".
+std::string Half(double x) {
+  const long twice = std::lround(2 * x);
+  return std::to_string(twice / 2) + (twice % 2 ? ".5" : "");
+}
+
+}  // namespace
 
 bool PlanetRules::Assembles(int n) const { return n > 0 && total_teeth % n == 0; }
 
@@ -27,6 +36,19 @@ PlanetRules CheckPlanetRules(const PlanetarySet& set) {
     p.Add({"", 0, "addendum_coefficient", std::to_string(set.addendum_coefficient), "out of range",
            "0 < h_a* < 2 (standard 1)"});
   p.ThrowIfAny();
+  const double coaxial = 0.5 * (set.ring_teeth - set.sun_teeth);
+  if (set.planet_teeth && std::abs(*set.planet_teeth - coaxial) > kMaxPlanetShiftModules) {
+    const std::string zp = std::to_string(*set.planet_teeth);
+    const std::string zc = Half(coaxial);
+    p.Add({"", 0, "planet_teeth", zp,
+           "does not fit between sun " + zs + " and ring " + zr + ": the coaxial planet has " + zc +
+               " teeth, so its centre distances to sun and ring differ by " +
+               Half(std::abs(*set.planet_teeth - coaxial)) +
+               " modules, more than profile shift bridges (seed 001 eq. 2.14)",
+           "|z_planet - (z_ring - z_sun)/2| <= " + Half(kMaxPlanetShiftModules) +
+               " (standard: z_planet = " + zc + ")"});
+    p.ThrowIfAny();
+  }
 
   PlanetRules r;
   r.total_teeth = set.sun_teeth + set.ring_teeth;

@@ -207,8 +207,10 @@ class TrainReader {
         found->rules = CheckPlanetRules(found->set);
       } catch (const InputError& e) {
         for (const auto& p : e.problems())
-          doc_.Problem("gear." + (p.key == "sun_teeth" ? found->sun : found->ring), "teeth", p.rule,
-                       p.allowed);
+          doc_.Problem("gear." + (p.key == "sun_teeth"      ? found->sun
+                                  : p.key == "planet_teeth" ? found->planet
+                                                            : found->ring),
+                       "teeth", p.rule, p.allowed);
         continue;
       }
       if (declared) {

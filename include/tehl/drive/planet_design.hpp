@@ -7,13 +7,21 @@
 //                            N < 180 deg / asin[(z_p + 2 h_a*) / (z_s + z_p)]     (2.13)
 // The module cancels. For a non-standard (profile-shifted) planet the document uses the
 // coaxial equivalent z_p = (z_ring - z_sun)/2 in (2.13) (Example 2.13): so does this code,
-// always, and `coaxial` tells whether the given planet is standard.
+// always, and `coaxial` tells whether the given planet is standard. A planet as made
+// differs from that equivalent by the difference of its two centre distances in modules,
+// m |z_p - (z_r - z_s)/2|, which the profile shifts of the two meshes have to bridge
+// (Example 2.13: half a module). Shift coefficients of about -0.5 ... +1 per gear bridge at
+// most about kMaxPlanetShiftModules; a planet further from the equivalent does not fit
+// between its sun and ring.
 #pragma once
 
 #include <optional>
 #include <vector>
 
 namespace tehl {
+
+// The largest |z_p - (z_r - z_s)/2| accepted for a profile-shifted planet [modules].
+inline constexpr double kMaxPlanetShiftModules = 2.0;
 
 struct PlanetarySet {
   int sun_teeth = 0;                  // z_s [-]
@@ -35,7 +43,8 @@ struct PlanetRules {
 };
 
 // Throws InputError (keys sun_teeth, ring_teeth, planet_teeth, addendum_coefficient) for a
-// set that cannot exist: teeth < 1, z_r <= z_s + 2, a planet whose tip circle does not fit.
+// set that cannot exist: teeth < 1, z_r <= z_s + 2, a planet more than
+// kMaxPlanetShiftModules from the coaxial one.
 PlanetRules CheckPlanetRules(const PlanetarySet& set);
 
 }  // namespace tehl

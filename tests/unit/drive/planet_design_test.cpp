@@ -71,5 +71,23 @@ TEST(PlanetRules, RejectsARingWithoutRoomForAPlanet) {
   EXPECT_THROW(CheckPlanetRules({0, 42, std::nullopt, 1.0}), InputError);
 }
 
+// A planet far from the coaxial one does not fit between sun and ring (seed 001 eq. 2.14):
+// sun 50, ring 1000 needs a planet of 475 teeth; 20 is 455 modules short. Within two modules
+// (profile shift) it is accepted as non-standard: 473 and 477 pass, 472 and 478 do not.
+TEST(PlanetRules, PlanetFarFromTheCoaxialOneIsRefused) {
+  EXPECT_THROW(CheckPlanetRules({50, 1000, 20, 1.0}), InputError);
+  EXPECT_THROW(CheckPlanetRules({50, 1000, 472, 1.0}), InputError);
+  EXPECT_THROW(CheckPlanetRules({50, 1000, 478, 1.0}), InputError);
+  EXPECT_FALSE(CheckPlanetRules({50, 1000, 473, 1.0}).coaxial);
+  EXPECT_FALSE(CheckPlanetRules({50, 1000, 477, 1.0}).coaxial);
+  try {
+    CheckPlanetRules({50, 1000, 20, 1.0});
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.problems().size(), 1u);
+    EXPECT_EQ(e.problems()[0].key, "planet_teeth");
+    EXPECT_NE(e.problems()[0].rule.find("475"), std::string::npos) << e.problems()[0].rule;
+  }
+}
+
 }  // namespace
 }  // namespace tehl
