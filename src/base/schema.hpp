@@ -135,6 +135,12 @@ class Document {
   friend class DocumentReader;
 };
 
+// How a key is described in messages and in `--print-default`.
+std::string KindName(ValueKind k);                // "a number", "a string", ...
+std::string UnitSuffix(const std::string& unit);  // " [m]", or "" without a unit
+std::string RangeText(const KeySpec& k);          // ">= 0 and < 1", or ""
+std::string AllowedText(const KeySpec& k);        // choices, or kind, range and unit
+
 std::string FormatReal(double x);     // shortest round-trip, valid TOML float
 std::string FormatShort(double x);    // 3 significant digits ("%.3g"), for messages
 std::string FormatValue(const Value& v);

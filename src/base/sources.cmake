@@ -3,5 +3,6 @@ list(APPEND TEHL_SOURCES
   src/base/error.cpp
   src/base/units.cpp
   src/base/schema.cpp
+  src/base/document.cpp
   src/base/toml_guard.cpp
 )

@@ -11,6 +11,8 @@ list(APPEND TEHL_SOURCES
   src/scene/dynamic_load.cpp
   src/scene/mesh_cycle_output.cpp
   src/scene/mesh_cycle_checkpoint.cpp
+  src/scene/mesh_cycle_checkpoint_reader.cpp
+  src/scene/checkpoint_codec.cpp
   src/scene/mesh_cycle_plan.cpp
   src/scene/mesh_cycle_scene.cpp
   src/scene/step_restart.cpp

@@ -1,0 +1,180 @@
+// Reading a mesh-cycle checkpoint and its journal, refusing any that cannot be trusted
+// (mesh_cycle_checkpoint.hpp).
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <vector>
+
+#include "scene/checkpoint_codec.hpp"
+#include "scene/mesh_cycle_checkpoint.hpp"
+
+namespace tehl::internal {
+
+using namespace checkpoint_codec;  // NOLINT(google-build-using-namespace): private codec
+
+namespace {
+
+std::optional<std::vector<char>> ReadPrefix(const std::string& path, std::int64_t bytes) {
+  // The size first: a damaged count must not become a huge allocation.
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec || bytes < 0 || static_cast<std::uintmax_t>(bytes) > size) return std::nullopt;
+  std::ifstream f(path, std::ios::binary);
+  if (!f) return std::nullopt;
+  std::vector<char> b(static_cast<size_t>(bytes));
+  f.read(b.data(), bytes);
+  if (f.gcount() != bytes) return std::nullopt;
+  return b;
+}
+
+// Why a checkpoint was not used.
+struct Unusable : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+void RequireFinite(double v, const char* what) {
+  if (!std::isfinite(v)) throw Unusable(std::string("it holds a non-finite ") + what);
+}
+void RequireFinite(const Eigen::Ref<const Eigen::MatrixXd>& m, const char* what) {
+  if (!m.allFinite()) throw Unusable(std::string("it holds a non-finite ") + what);
+}
+
+// The film and the solver history a run continues from: finite, as every converged level is
+// (a checkpoint is written only after a step that converged).
+void RequireFinite(const MeshCycleCheckpoint& c) {
+  RequireFinite(c.elapsed_s, "wall time");
+  const FilmState& s = c.state;
+  RequireFinite(s.p_pa, "pressure");
+  RequireFinite(s.h_m, "film thickness");
+  for (double v : {s.h0_m, s.time_s, s.travel1_m, s.travel2_m}) RequireFinite(v, "film state");
+  const FilmTemperature& t = s.temperature;
+  RequireFinite(t.t_k, "film temperature");
+  for (const auto* v : {&t.t1_k, &t.t2_k, &t.q1_w_m2, &t.q2_w_m2})
+    RequireFinite(*v, "surface temperature or heat flux");
+  const LineContactSolver::TransientHistory& h = c.history;
+  for (const auto* v : {&h.q1, &h.q2, &h.q3}) RequireFinite(*v, "transient history");
+  for (double v : {h.dt_prev_s, h.dt_prev2_s, h.next_substep_s, h.c_prev.reduced_radius_m,
+                   h.c_prev.u1_m_s, h.c_prev.u2_m_s, h.c_prev.load_n_per_m, h.c_prev.temperature_k})
+    RequireFinite(v, "transient history");
+  RequireFinite(h.t_prev_k, "transient history");
+}
+
+// Reads the checkpoint at `path` and its journal; throws Unusable saying why they cannot be
+// used. Returns nullopt when there is no checkpoint.
+std::optional<MeshCycleCheckpoint> Read(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (status.type() == fs::file_type::not_found) return std::nullopt;
+  if (ec) throw Unusable("it cannot be examined: " + ec.message());
+  if (fs::is_directory(status)) throw Unusable("it is a folder, not a file");
+  if (!fs::is_regular_file(status)) throw Unusable("it is not a regular file");
+  std::vector<char> bytes;
+  {
+    std::ifstream f(path, std::ios::binary);
+    if (!f) throw Unusable("it cannot be read");
+    bytes.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+    if (f.bad()) throw Unusable("it cannot be read");
+  }
+  if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, 7) != 0)
+    throw Unusable("it is not a tehl checkpoint");
+  if (bytes[7] != kMagic[7])
+    throw Unusable(std::string("it was written by another version of tehl (format ") +
+                   std::string(bytes.data(), sizeof kMagic) + "; this version reads " +
+                   std::string(kMagic, sizeof kMagic) + ")");
+  std::uint64_t stored = 0;
+  if (bytes.size() < sizeof kMagic + kChecksumBytes)
+    throw Unusable("the file is damaged (it is cut short)");
+  std::memcpy(&stored, bytes.data() + bytes.size() - kChecksumBytes, kChecksumBytes);
+  bytes.resize(bytes.size() - kChecksumBytes);
+  if (Fnv1a(bytes.data(), bytes.size()) != stored)
+    throw Unusable("the file is damaged (its checksum does not match its contents)");
+
+  MeshCycleCheckpoint c;
+  std::array<std::int64_t, 7> counts{};
+  try {
+    In in(std::move(bytes));
+    char magic[8];
+    in.Raw(magic, sizeof magic);
+    c.fingerprint = static_cast<std::uint64_t>(in.I());
+    c.next_step = static_cast<int>(in.I());
+    c.elapsed_s = in.F();
+    c.journal_id = static_cast<std::uint64_t>(in.I());
+    c.journal_bytes = in.I();
+    c.journal_checksum = static_cast<std::uint64_t>(in.I());
+    for (auto& n : counts) n = in.I();
+    FilmState& s = c.state;
+    s.p_pa = in.E();
+    s.h_m = in.E();
+    for (double* v : {&s.h0_m, &s.time_s, &s.travel1_m, &s.travel2_m}) *v = in.F();
+    FilmTemperature& t = s.temperature;
+    t.t_k = in.M();
+    for (auto* v : {&t.t1_k, &t.t2_k, &t.q1_w_m2, &t.q2_w_m2}) *v = in.E();
+    c.history.levels = static_cast<int>(in.I());
+    c.history.q1 = in.E();
+    c.history.q2 = in.E();
+    c.history.q3 = in.E();
+    c.history.dt_prev_s = in.F();
+    c.history.dt_prev2_s = in.F();
+    c.history.next_substep_s = in.F();
+    c.history.c_prev = GetConditions(in);
+    c.history.t_prev_k = in.M();
+    if (!in.done() || c.journal_bytes < kRowsHeaderBytes) throw std::runtime_error("layout");
+  } catch (const std::exception&) {
+    throw Unusable("the file is damaged (its contents do not have the layout of a checkpoint)");
+  }
+  RequireFinite(c);
+
+  // The committed part of the journal: its header, then one chunk per checkpoint.
+  const std::string rows_path = CheckpointRowsPath(path);
+  if (!fs::is_regular_file(rows_path, ec))
+    throw Unusable("its rows file " + rows_path + " is missing or not a file");
+  std::optional<std::vector<char>> rows = ReadPrefix(rows_path, c.journal_bytes);
+  if (!rows)
+    throw Unusable("its rows file " + rows_path + " is shorter than the checkpoint records");
+  // The checksum first: a damaged header is damage, not another version.
+  if (Fnv1a(rows->data(), rows->size()) != c.journal_checksum)
+    throw Unusable("its rows file " + rows_path +
+                   " is damaged or belongs to another run (its checksum does not match the "
+                   "one the checkpoint records)");
+  if (std::memcmp(rows->data(), kRowsMagic, sizeof kRowsMagic) != 0)
+    throw Unusable("its rows file " + rows_path + " is not of this version of tehl");
+  try {
+    In j(std::move(*rows));
+    char magic[8];
+    j.Raw(magic, sizeof magic);
+    if (static_cast<std::uint64_t>(j.I()) != c.journal_id) throw std::runtime_error("identity");
+    MeshCycleResult& r = c.result;
+    const auto profiles = Profiles(r);
+    while (!j.done()) {
+      for (std::int64_t k = j.Count(); k > 0; --k) r.steps.push_back(GetStep(j));
+      for (auto* a : profiles)
+        for (std::int64_t k = j.Count(); k > 0; --k) a->push_back(j.V());
+    }
+    if (static_cast<std::int64_t>(r.steps.size()) != counts[0])
+      throw std::runtime_error("row count");
+    for (size_t a = 0; a < profiles.size(); ++a)
+      if (static_cast<std::int64_t>(profiles[a]->size()) != counts[a + 1])
+        throw std::runtime_error("profile count");
+  } catch (const std::exception&) {
+    throw Unusable("its rows file " + rows_path + " does not hold the rows the checkpoint records");
+  }
+  return c;
+}
+
+}  // namespace
+
+std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path, std::string* problem) {
+  if (problem) problem->clear();
+  try {
+    return Read(path);
+  } catch (const std::exception& e) {
+    if (problem) *problem = e.what();
+    return std::nullopt;
+  }
+}
+
+}  // namespace tehl::internal
