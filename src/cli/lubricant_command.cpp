@@ -119,8 +119,7 @@ Command AddLubricantCommand(CLI::App& app) {
         if (path.empty())
           throw InputError(InputProblem{"", 0, "NAME", "\"" + args->name + "\"",
                                         "no such lubricant file",
-                                        "sae40, sae90, reference_z068 (in lubricants/ or "
-                                        "$TEHL_LUBRICANT_DIR), or a path to a .toml file"});
+                                        internal::LubricantSearchText("")});
         const Lubricant lube = Lubricant::FromFile(path);
         const double t0 = lube.reference_temperature_k();
         ProblemList problems;

@@ -1,5 +1,6 @@
-// Where tehl's helper scripts (scripts/*.py) are: $TEHL_SCRIPT_DIR, then the source tree
-// (TEHL_SOURCE_SCRIPT_DIR), then the installed share/tehl/scripts. Private to src/.
+// Where tehl's helper scripts (scripts/*.py) are: $TEHL_SCRIPT_DIR, then share/tehl/scripts
+// beside the installed library or program, then the source tree, then the configured
+// install prefix (data_dir.hpp). Private to src/.
 #pragma once
 
 #include <string>

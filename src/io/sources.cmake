@@ -4,4 +4,5 @@ list(APPEND TEHL_SOURCES
   src/io/atomic_file.cpp
   src/io/csv_table.cpp
   src/io/script_path.cpp
+  src/io/data_dir.cpp
 )

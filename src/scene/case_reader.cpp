@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "io/data_dir.hpp"
 #include "tehl/scene/case_schema.hpp"
 
 namespace tehl::internal {
@@ -14,18 +15,28 @@ std::string ResolveLubricantPath(const std::string& name, const std::string& cas
   std::vector<fs::path> candidates;
   const fs::path as_given(name);
   const fs::path case_dir = fs::path(case_path).parent_path();
-  candidates.push_back(as_given);
-  if (!case_dir.empty()) candidates.push_back(case_dir / as_given);
   const std::string file = as_given.has_extension() ? name : name + ".toml";
+  candidates.push_back(as_given);
+  if (!case_dir.empty()) {
+    candidates.push_back(case_dir / as_given);
+    candidates.push_back(case_dir / file);
+  }
   if (const char* env = std::getenv("TEHL_LUBRICANT_DIR")) candidates.push_back(fs::path(env) / file);
   if (!case_dir.empty()) candidates.push_back(case_dir / ".." / "lubricants" / file);
-  candidates.push_back(fs::path(TEHL_SOURCE_LUBRICANT_DIR) / file);
-  candidates.push_back(fs::path(TEHL_INSTALL_LUBRICANT_DIR) / file);
+  for (const fs::path& d : DataDirs("lubricants", nullptr)) candidates.push_back(d / file);
   for (const auto& c : candidates) {
     std::error_code ec;
     if (fs::is_regular_file(c, ec)) return c.lexically_normal().string();
   }
   return "";
+}
+
+std::string LubricantSearchText(const std::string& case_path) {
+  std::string s = "sae40, sae90, reference_z068 or NAME, as NAME.toml";
+  if (!case_path.empty()) s += " beside the case, in ../lubricants of it";
+  s += std::string(case_path.empty() ? "" : ",") + " in $TEHL_LUBRICANT_DIR";
+  for (const fs::path& d : DataDirs("lubricants", nullptr)) s += ", in " + d.string();
+  return s + "; or a path to a lubricant .toml file";
 }
 
 Document ReadCaseDocument(const std::string& path) {
@@ -151,8 +162,7 @@ Document ReadCaseDocument(const std::string& path) {
   if (doc.Has("lubricant", "name")) {
     const std::string name = doc.String("lubricant", "name");
     if (ResolveLubricantPath(name, path).empty())
-      doc.Problem("lubricant", "name", "no such lubricant file",
-                  "sae40, sae90, reference_z068, or a path to a lubricant .toml file");
+      doc.Problem("lubricant", "name", "no such lubricant file", LubricantSearchText(path));
   }
   if (doc.Has("numerics", "grid_points")) {
     const long long n = doc.Int("numerics", "grid_points");

@@ -20,8 +20,12 @@ inline constexpr size_t kMaxOutputNameChars = 200;
 Document ReadCaseDocument(const std::string& path);
 
 // Resolves a lubricant name from a case ("sae40" or a path) relative to the case file:
-// a path that exists, else lubricants/<name>.toml in the source tree, the installed data
-// folder, or $TEHL_LUBRICANT_DIR. Returns "" when nothing matches.
+// a path that exists (as given or beside the case, with or without .toml), else <name>.toml
+// in $TEHL_LUBRICANT_DIR, in ../lubricants of the case, or in the data folders of
+// io/data_dir.hpp (installed share/tehl/lubricants, source tree). "" when nothing matches.
 std::string ResolveLubricantPath(const std::string& name, const std::string& case_path);
+
+// What a lubricant name may be, with the folders searched (for "no such lubricant file").
+std::string LubricantSearchText(const std::string& case_path);
 
 }  // namespace tehl::internal

@@ -124,8 +124,11 @@ FilmCase ReadFilmCase(Document& doc) {
       f.lubricant = std::make_shared<const Lubricant>(Lubricant::FromFile(path));
     } catch (const InputError& e) {
       for (const auto& p : e.problems())
-        doc.Problem("lubricant", "name", "the lubricant file has a problem: " + p.ToString(),
-                    "a valid lubricant file");
+        doc.Problem("lubricant", "name",
+                    "the lubricant file has a problem: " + p.file +
+                        (p.line > 0 ? ":" + std::to_string(p.line) : std::string()) + ": " + p.key +
+                        (p.value.empty() ? "" : " = " + p.value) + ": " + p.rule,
+                    p.allowed);
     }
   }
   f.inlet_temperature_k = doc.Given("lubricant", "inlet_temperature_k")

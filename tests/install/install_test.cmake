@@ -34,3 +34,14 @@ if(NOT lubricant)
   message(FATAL_ERROR "no share/tehl/lubricants/sae40.toml under ${prefix}")
 endif()
 run("installed tehl" ${prefix}/bin/tehl lubricant ${lubricant} --p 0:1e9:3 --T 313.15)
+
+# A lubricant by name is found in the installed share/tehl/lubricants, not in the source tree
+# the program was built from, also after the prefix has been moved.
+set(moved ${WORK_DIR}/moved-prefix)
+file(RENAME ${prefix} ${moved})
+run("installed tehl, moved prefix, lubricant by name" ${moved}/bin/tehl lubricant sae40
+    --p 0:1e9:3 --T 313.15)
+string(FIND "${last_output}" "${moved}/share/tehl/lubricants/sae40.toml" found)
+if(found EQUAL -1)
+  message(FATAL_ERROR "the moved installation did not read its own sae40.toml:\n${last_output}")
+endif()

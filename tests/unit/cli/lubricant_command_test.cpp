@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -78,6 +80,31 @@ TEST(LubricantCommand, PrintDefaultListsEveryLubricantSection) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   for (const char* s : {"[density]", "[viscosity]", "[thermal]", "[eyring]", "source"})
     EXPECT_NE(r.out.find(s), std::string::npos) << s;
+}
+
+// A lubricant file beside the case is found by its name without ".toml", as the shipped
+// names are; a name found nowhere lists the folders searched.
+TEST(LubricantCommand, ACaseFindsItsOwnLubricantByNameAndAMissingOneListsTheFolders) {
+  namespace fs = std::filesystem;
+  const fs::path dir = testing::UniqueTempPath("own_oil");
+  fs::create_directories(dir);
+  const std::string src = std::string(TEHL_SOURCE_DIR);
+  fs::copy_file(src + "/lubricants/sae40.toml", dir / "vg100.toml");
+  std::string text = testing::ReadAll(src + "/cases/disc_steady.toml");
+  const std::string from = "name = \"sae40\"";
+  ASSERT_NE(text.find(from), std::string::npos);
+  text.replace(text.find(from), from.size(), "name = \"vg100\"");
+  std::ofstream(dir / "disc.toml") << text;
+  const testing::RunResult ok = RunTehl("case --check '" + (dir / "disc.toml").string() + "'");
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  text.replace(text.find("vg100"), 5, "vg101");
+  std::ofstream(dir / "disc.toml", std::ios::trunc) << text;
+  const testing::RunResult bad = RunTehl("case --check '" + (dir / "disc.toml").string() + "'");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("no such lubricant file"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("beside the case"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("lubricants"), std::string::npos) << bad.err;
+  fs::remove_all(dir);
 }
 
 }  // namespace
