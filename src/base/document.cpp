@@ -10,6 +10,7 @@
 
 #include "base/schema.hpp"
 #include "base/toml_guard.hpp"
+#include "tehl/units.hpp"
 
 namespace tehl::internal {
 namespace {
@@ -178,7 +179,8 @@ class DocumentReader {
     };
     auto range_problem = [&](double x) {
       std::string rule = "out of range: must be " + RangeText(k) + UnitSuffix(k.unit);
-      if (k.unit == "K" && x < 200.0 && x > -273.15) rule += " (did you give degrees Celsius?)";
+      if (k.unit == "K" && x < kMinAbsoluteTemperatureK && x > -273.15)
+        rule += " (did you give degrees Celsius?)";
       if (k.unit == "Pa" && k.min == kMinModulusPa && x > 0 && x < kMinModulusPa)
         rule += " (did you give GPa or MPa? steel is 206e9 Pa)";
       if (!std::isfinite(x)) rule = "must be a finite number";

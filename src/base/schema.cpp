@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "tehl/units.hpp"
+
 namespace tehl::internal {
 
 std::string KindName(ValueKind k) {
@@ -188,7 +190,8 @@ KeySpec Reals(std::string name,
 
 KeySpec Temperature(std::string name, std::string def, std::string meaning) {
   // Absolute temperatures only: anything below 200 K is almost surely degrees Celsius.
-  return Real(std::move(name), "K", std::move(def), std::move(meaning), 200.0, 1000.0);
+  return Real(std::move(name), "K", std::move(def), std::move(meaning), kMinAbsoluteTemperatureK,
+              1000.0);
 }
 
 KeySpec Modulus(std::string name, std::string def, std::string meaning) {

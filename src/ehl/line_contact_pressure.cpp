@@ -256,12 +256,18 @@ LineContactSolver::Summary LineContactSolver::Impl::Finish(const ContactConditio
 }
 
 bool LineContactSolver::Impl::ValidConditions(const ContactConditions& c, Summary* sum) const {
+  using internal::FormatShort;
   std::string bad;
-  if (!(c.reduced_radius_m > 0) || !std::isfinite(c.reduced_radius_m)) bad += " R <= 0;";
-  if (!(c.load_n_per_m > 0) || !std::isfinite(c.load_n_per_m)) bad += " w <= 0;";
+  if (!(c.reduced_radius_m > 0) || !std::isfinite(c.reduced_radius_m))
+    bad += " R = " + FormatShort(c.reduced_radius_m) + " m, not finite and > 0;";
+  if (!(c.load_n_per_m > 0) || !std::isfinite(c.load_n_per_m))
+    bad += " w = " + FormatShort(c.load_n_per_m) + " N/m, not finite and > 0;";
   if (!(c.um() > 0) || !std::isfinite(c.um()))
-    bad += " entrainment speed um <= 0 (the inlet is at x_start);";
-  if (!(c.temperature_k > 0)) bad += " T <= 0 K;";
+    bad += " entrainment speed um = " + FormatShort(c.um()) +
+           " m/s, not finite and > 0 (the inlet is at x_start);";
+  if (!(c.temperature_k >= kMinAbsoluteTemperatureK) || !std::isfinite(c.temperature_k))
+    bad += " T = " + FormatShort(c.temperature_k) + " K, not a finite temperature of at least " +
+           FormatShort(kMinAbsoluteTemperatureK) + " K (degrees Celsius?);";
   if (bad.empty()) return true;
   sum->termination = Termination::kInvalidInput;
   sum->message = "invalid contact conditions:" + bad;

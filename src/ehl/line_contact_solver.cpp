@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -321,28 +322,67 @@ const LineContactSolver::Options& LineContactSolver::options() const { return im
 FilmState LineContactSolver::InitialGuess(const ContactConditions& c) const {
   return impl_->InitialGuess(c);
 }
+namespace {
+
+// Why `s` cannot be the film of a solver on `grid` ("" when it can). An empty state is a film
+// only where `empty_ok` (a cold steady solve).
+std::string StateProblem(const UniformGrid& grid, const FilmState* s, bool empty_ok) {
+  if (!s) return "the film state pointer is null";
+  if (empty_ok && s->p_pa.size() == 0 && s->h_m.size() == 0) return "";
+  const Eigen::Index n = grid.size();
+  if (!s->valid() || s->p_pa.size() != n)
+    return "the film state has " + std::to_string(s->p_pa.size()) + " pressures and " +
+           std::to_string(s->h_m.size()) + " film thicknesses, this solver's grid " +
+           std::to_string(n) + " nodes (" +
+           (empty_ok ? "an empty state starts cold" : "solve it with SolveSteady first") + ")";
+  const FilmTemperature& t = s->temperature;
+  if (t.t_k.size() > 0 && t.t_k.rows() != n)
+    return "the film temperature has " + std::to_string(t.t_k.rows()) + " rows, the grid " +
+           std::to_string(n) + " nodes";
+  return "";
+}
+
+LineContactSolver::Summary InvalidState(std::string why) {
+  LineContactSolver::Summary sum;
+  sum.termination = LineContactSolver::Termination::kInvalidInput;
+  sum.message = "invalid film state: " + std::move(why);
+  return sum;
+}
+
+}  // namespace
+
 LineContactSolver::Summary LineContactSolver::SolveSteady(const ContactConditions& c,
                                                           FilmState* state) {
+  if (std::string why = StateProblem(grid(), state, true); !why.empty())
+    return InvalidState(std::move(why));
   if (state->solved_for) impl_->PredictHertzSimilar(*state->solved_for, c, state);
   Summary sum = impl_->SolveCoupled(c, internal::TimeDerivative{}, nullptr, 0.0, state);
   if (sum.usable()) state->solved_for = c;
   return sum;
 }
 void LineContactSolver::BeginTransient(const ContactConditions& c, const FilmState& initial) {
+  if (std::string why = StateProblem(grid(), &initial, false); !why.empty())
+    throw InputError(InputProblem{"", 0, "BeginTransient.initial", "",
+                                  "is not a film of this solver: " + why,
+                                  "a state solved on this solver's grid"});
   impl_->BeginTransient(c, initial);
 }
 LineContactSolver::Summary LineContactSolver::Step(const ContactConditions& c,
                                                    double dt,
                                                    FilmState* state,
                                                    const ContactConditions* c_start) {
+  if (std::string why = StateProblem(grid(), state, false); !why.empty())
+    return InvalidState(std::move(why));
   Summary sum = impl_->Step(c, dt, state, c_start);
   if (sum.usable()) state->solved_for = c;
   return sum;
 }
 double LineContactSolver::ResidualNorm(const ContactConditions& c, const FilmState& s) const {
+  if (!StateProblem(grid(), &s, false).empty()) return std::numeric_limits<double>::quiet_NaN();
   return impl_->ResidualNorm(c, s);
 }
 Eigen::VectorXd LineContactSolver::MassFlow(const ContactConditions& c, const FilmState& s) const {
+  if (!StateProblem(grid(), &s, false).empty()) return {};
   return impl_->MassFlow(c, s);
 }
 LineContactSolver::TransientHistory LineContactSolver::SaveTransient() const {

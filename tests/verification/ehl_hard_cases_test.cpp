@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <type_traits>
 
 #include "verification/ehl_moes_point.hpp"
 
@@ -105,6 +106,9 @@ TEST(HardCasesVerification, InvalidConditionsAreReportedNotThrown) {
                                                              good.load_n_per_m, good.temperature_k}});
   for (double w : {0.0, -1e5, nan}) cases.push_back({"w", {good.reduced_radius_m, good.u1_m_s,
                                                             good.u2_m_s, w, good.temperature_k}});
+  // 40 "K" is 40 degrees Celsius given as kelvin (units.hpp: kMinAbsoluteTemperatureK).
+  for (double t : {40.0, 0.0, nan})
+    cases.push_back({"T", {good.reduced_radius_m, good.u1_m_s, good.u2_m_s, good.load_n_per_m, t}});
   for (const Bad& b : cases) {
     // From an empty state and from a valid starting guess: neither may gain a NaN.
     for (bool with_guess : {false, true}) {
@@ -129,6 +133,53 @@ TEST(HardCasesVerification, InvalidConditionsAreReportedNotThrown) {
     }
   }
 }
+
+// A film state that is not of the solver's grid, or no state at all, is an invalid input:
+// reported in the Summary (SolveSteady, Step) or thrown as InputError (BeginTransient), never
+// read past its end. An empty state is a cold start for SolveSteady only.
+TEST(HardCasesVerification, AStateOfAnotherGridOrNoneIsReportedNotRead) {
+  const MoesPoint mp{20, 10};
+  MoesSolver ms(mp, 257, {}, /*transient=*/true);
+  MoesSolver coarse(mp, 129, {}, /*transient=*/true);
+  const ContactConditions c = mp.Conditions();
+  using T = LineContactSolver::Termination;
+  EXPECT_EQ(ms.solver.SolveSteady(c, nullptr).termination, T::kInvalidInput);
+  EXPECT_EQ(ms.solver.Step(c, 1e-6, nullptr).termination, T::kInvalidInput);
+  FilmState empty;
+  const LineContactSolver::Summary never_solved = ms.solver.Step(c, 1e-6, &empty);
+  EXPECT_EQ(never_solved.termination, T::kInvalidInput);
+  EXPECT_NE(never_solved.message.find("SolveSteady first"), std::string::npos)
+      << never_solved.message;
+  EXPECT_THROW(ms.solver.BeginTransient(c, empty), InputError);
+  FilmState other;
+  ASSERT_TRUE(coarse.solver.SolveSteady(c, &other).usable());
+  const LineContactSolver::Summary wrong = ms.solver.SolveSteady(c, &other);
+  EXPECT_EQ(wrong.termination, T::kInvalidInput);
+  EXPECT_NE(wrong.message.find("129 pressures"), std::string::npos) << wrong.message;
+  EXPECT_EQ(ms.solver.Step(c, 1e-6, &other).termination, T::kInvalidInput);
+  EXPECT_THROW(ms.solver.BeginTransient(c, other), InputError);
+  EXPECT_TRUE(std::isnan(ms.solver.ResidualNorm(c, other)));
+  EXPECT_EQ(ms.solver.MassFlow(c, other).size(), 0);
+  EXPECT_EQ(other.p_pa.size(), 129);  // untouched
+  // The same steps from a state of its own grid work: cold steady, then a transient step.
+  FilmState own;
+  ASSERT_TRUE(ms.solver.SolveSteady(c, &own).usable());
+  EXPECT_TRUE(ms.solver.Step(c, 1e-6, &own).usable());
+}
+
+// The lubricant must outlive the solver: a temporary one is refused at compile time.
+static_assert(!std::is_constructible_v<LineContactSolver,
+                                       const UniformGrid&,
+                                       double,
+                                       Lubricant&&,
+                                       const FilmEffects&,
+                                       const LineContactSolver::Options&>);
+static_assert(std::is_constructible_v<LineContactSolver,
+                                      const UniformGrid&,
+                                      double,
+                                      const Lubricant&,
+                                      const FilmEffects&,
+                                      const LineContactSolver::Options&>);
 
 }  // namespace
 }  // namespace tehl

@@ -175,7 +175,7 @@ class LineContactSolver {
   };
   struct Summary {
     Termination termination = Termination::kInvalidInput;
-    std::string message = "Solve() was not called.";
+    std::string message = "not solved yet (SolveSteady or Step was not called)";
     int iterations = 0;             // Newton iterations of the final stage [-]
     int total_iterations = 0;       // including continuation stages [-]
     int continuation_stages = 0;    // 0 = solved directly [-]
@@ -204,13 +204,24 @@ class LineContactSolver {
     std::string BriefReport() const;
   };
 
-  // The lubricant and surface shapes must outlive the solver. surface1/2 may be null
-  // (smooth); they are used only when effects.roughness is on.
+  // e_prime_pa: the plane-strain modulus E' with 2/E' = (1-nu1^2)/E1 + (1-nu2^2)/E2, which is
+  // twice Johnson's E* (ReducedModulus in units.hpp) [Pa]. The lubricant and surface shapes
+  // must outlive the solver (a temporary lubricant does not compile). surface1/2 may be null
+  // (smooth); they are used only when effects.roughness is on. Throws InputError for a bad
+  // grid, modulus or Options (Options::Validate).
   LineContactSolver(const UniformGrid& grid, double e_prime_pa, const Lubricant& lubricant,
                     const FilmEffects& effects, const Options& options,
                     std::shared_ptr<const SurfaceShape> surface1 = nullptr,
                     std::shared_ptr<const SurfaceShape> surface2 = nullptr,
                     const ContactSolids& solids = ContactSolids{});
+  LineContactSolver(const UniformGrid&,
+                    double,
+                    const Lubricant&&,
+                    const FilmEffects&,
+                    const Options&,
+                    std::shared_ptr<const SurfaceShape> = nullptr,
+                    std::shared_ptr<const SurfaceShape> = nullptr,
+                    const ContactSolids& = ContactSolids{}) = delete;
   ~LineContactSolver();
   LineContactSolver(LineContactSolver&&) noexcept;
   LineContactSolver& operator=(LineContactSolver&&) noexcept;
@@ -221,10 +232,17 @@ class LineContactSolver {
   // A first guess: Hertz pressure (scaled onto the grid) and h0 from the Moes film fit.
   FilmState InitialGuess(const ContactConditions& c) const;
 
+  // Bad conditions (R, w, um not finite and > 0; T below kMinAbsoluteTemperatureK) and a
+  // state that is null or not of this grid end the solve at once with
+  // Termination::kInvalidInput and say why in the Summary's message; nothing is thrown. The
+  // solver takes any load (M = 5000 runs converge); case files refuse loads whose Hertz
+  // half-width exceeds kMaxHertzWidthRatio R, and so should a caller that sizes its grid
+  // from such a load.
+  //
   // Steady solve. state: the initial guess on entry when valid() (else the interpolated
   // solution on a grid of half the cells, recursively, down to the InitialGuess on a grid of
-  // about coarse_grid_nodes), the solution on exit. On failure the state holds the best iterate found and the Summary
-  // says why; it never holds NaN.
+  // about coarse_grid_nodes), the solution on exit. On failure the state holds the best iterate
+  // found and the Summary says why; it never holds NaN.
   Summary SolveSteady(const ContactConditions& c, FilmState* state);
 
   // Transient: BeginTransient records the state at t0 (under conditions c) as history; each
@@ -235,6 +253,8 @@ class LineContactSolver {
   // is done again in more substeps; after substeps the history keeps the whole-step levels. With
   // effects.transient off, Step is a steady solve at the new conditions (the surfaces still
   // move).
+  // Throws InputError when `initial` is not a film of this grid. Step begins by itself from
+  // `state` when BeginTransient was not called.
   void BeginTransient(const ContactConditions& c, const FilmState& initial);
   // c_start: the conditions just after the current level where they jump there (the load
   // at B and D of a mesh cycle); the step, and its substeps, then go from c_start to c_new
