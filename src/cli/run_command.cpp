@@ -146,7 +146,10 @@ int RunContact(const RunArgs& a) {
     NoteHotFilms(r.steps, !r.non_newtonian, [](size_t k, const ContactStepRecord& s) {
       return Where("step %zu (t = %.4g s)", k, s.time_s);
     });
-  std::printf("wrote %s and %s\n", r.profile_csv.c_str(), r.history_csv.c_str());
+  if (r.profile_csv.empty())
+    std::printf("wrote %s\n", r.history_csv.c_str());
+  else
+    std::printf("wrote %s and %s\n", r.profile_csv.c_str(), r.history_csv.c_str());
   if (!r.converged()) {
     ReportFailedSteps(r.steps, [](size_t k, const ContactStepRecord& s) {
       return Where("step %zu (t = %.4g s)", k, s.time_s);

@@ -90,17 +90,25 @@ Document ReadCaseDocument(const std::string& path) {
     // A length in millimetres where metres are due passes every range: it shows as a face
     // width of a sliver of a module, or of thousands of modules. Spur gears have b/m from
     // about 3 (FZG type C: 14 mm / 4.5 mm) to about 40 (wide industrial gears).
-    if (doc.Given("gear", "module_m") && doc.Given("gear", "face_width_m")) {
+    // A module in millimetres with the face width in millimetres too keeps b/m plausible;
+    // the module alone then gives it away (the largest spur gears have m of about 50 mm).
+    if (doc.Given("gear", "module_m") && doc.Real("gear", "module_m") > kMaxModuleM)
+      doc.Problem(
+          "gear", "module_m",
+          "a module of " + FormatShort(doc.Real("gear", "module_m")) + " m: in millimetres?",
+          "module_m in metres (3 mm = 0.003), at most " + FormatShort(kMaxModuleM) +
+              " m (lengths such as face_width_m in metres too)");
+    else if (doc.Given("gear", "module_m") && doc.Given("gear", "face_width_m")) {
       const double b_m = doc.Real("gear", "face_width_m") / doc.Real("gear", "module_m");
       if (b_m < 0.2)
         doc.Problem("gear", "module_m",
-                    "the face width is " + FormatReal(b_m) + " modules: a module in millimetres?",
+                    "the face width is " + FormatShort(b_m) + " modules: a module in millimetres?",
                     "module_m in metres (2 mm = 0.002), at most 5 face widths");
       else if (b_m > 200.0)
-        doc.Problem("gear", "face_width_m",
-                    "the face width is " + FormatReal(b_m) +
-                        " modules: a face width in millimetres?",
-                    "face_width_m in metres (25 mm = 0.025), at most 200 modules");
+        doc.Problem(
+            "gear", "face_width_m",
+            "the face width is " + FormatShort(b_m) + " modules: a face width in millimetres?",
+            "face_width_m in metres (25 mm = 0.025), at most 200 modules");
     }
   } else if (doc.HasSection("motor")) {
     doc.Problem("motor", "", "[motor] drives the pinion of a gear pair",
@@ -142,6 +150,27 @@ Document ReadCaseDocument(const std::string& path) {
     if (doc.Int("contact", "steps") > 0 && t.size() < 2)
       doc.Problem("contact", "steps", "a transient run needs time tables",
                   "time_s with at least two entries, or steps = 0 for a steady solve");
+    // A steady solve (steps = 0) runs at the scalar load and speeds: tables given with it
+    // would be dropped without a word.
+    if (doc.Int("contact", "steps") == 0 && doc.Given("contact", "time_s"))
+      doc.Problem("contact", "steps",
+                  "a steady solve at load_n_per_m and speed_*_m_s, but time_s and its "
+                  "tables are given: they would not be used",
+                  "steps > 0 to march through the tables, or no time_s and tables for a steady "
+                  "solve");
+    // Gear-cycle settings that a line contact has no use for: refused when set to anything
+    // but their default (a study writes every default into its scenes).
+    if (doc.Int("numerics", "steps") != 0)
+      doc.Problem("numerics", "steps", "counts the time steps from A to E of a gear cycle",
+                  "for a [contact] case, steps in [contact] (0 = steady)");
+    if (!doc.Bool("output", "csv"))
+      doc.Problem("output", "csv", "a [contact] run writes CSV files only",
+                  "true (the default), or leave the key out");
+    if (doc.Bool("output", "temperature_field"))
+      doc.Problem("output", "temperature_field",
+                  "the full T(x, z) goes into the HDF5 result of a gear cycle; a [contact] run "
+                  "writes CSV files only",
+                  "false (the default), or leave the key out");
   }
 
   const bool rough_effect = doc.Bool("effects", "roughness");

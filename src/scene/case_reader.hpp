@@ -15,6 +15,10 @@ namespace tehl::internal {
 // add suffixes such as "_profiles.png") [-].
 inline constexpr size_t kMaxOutputNameChars = 200;
 
+// The largest module a gear case takes: the largest spur gears (mill and kiln drives) have
+// modules of about 40-50 mm; a module of metres is a module in millimetres [m].
+inline constexpr double kMaxModuleM = 0.1;
+
 // Reads and checks a case file. Problems are collected in the returned Document; callers
 // add their own and then call ThrowIfProblems().
 Document ReadCaseDocument(const std::string& path);

@@ -169,7 +169,8 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
       ro.output_dir.empty() ? fs::path(doc.String("output", "directory")) : fs::path(ro.output_dir);
   std::string name = doc.String("output", "name");
   if (name.empty()) name = fs::path(case_path).stem().string();
-  result.profile_csv = (dir / (name + "_profile.csv")).string();
+  const bool profiles = doc.Bool("output", "profiles");
+  result.profile_csv = profiles ? (dir / (name + "_profile.csv")).string() : std::string();
   result.history_csv = (dir / (name + "_steps.csv")).string();
   // Both texts are formatted (and every number checked) before either file is written.
   std::vector<double> t_mid;  // mid-film temperature, as the mesh cycle's /profiles/T_mid
@@ -178,13 +179,16 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
     const Eigen::VectorXd mid = 0.5 * (tk.col((nz - 1) / 2) + tk.col(nz / 2));
     t_mid.assign(mid.data(), mid.data() + mid.size());
   }
-  const std::string profile = internal::ContactProfileCsv(
-      result.profile_csv, grid.Nodes(),
-      std::vector<double>(state.p_pa.data(), state.p_pa.data() + state.p_pa.size()),
-      std::vector<double>(state.h_m.data(), state.h_m.data() + state.h_m.size()), t_mid);
+  const std::string profile =
+      !profiles
+          ? std::string()
+          : internal::ContactProfileCsv(
+                result.profile_csv, grid.Nodes(),
+                std::vector<double>(state.p_pa.data(), state.p_pa.data() + state.p_pa.size()),
+                std::vector<double>(state.h_m.data(), state.h_m.data() + state.h_m.size()), t_mid);
   const std::string history = internal::ContactStepsCsv(result.history_csv, result.steps);
   // The steps file marks a finished run (a study's result file): it is written last.
-  internal::WriteTextAtomically(result.profile_csv, profile);
+  if (profiles) internal::WriteTextAtomically(result.profile_csv, profile);
   internal::WriteTextAtomically(result.history_csv, history);
   return result;
 }

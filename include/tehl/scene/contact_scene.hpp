@@ -48,7 +48,8 @@ struct ContactStepRecord {
 
 struct ContactRunResult {
   std::vector<ContactStepRecord> steps;  // one for a steady run; steady start + steps else
-  std::string profile_csv;               // x, p, h (and T_mid when thermal) of the last level
+  std::string profile_csv;               // x, p, h (and T_mid when thermal) of the last level;
+                                         // "" with [output] profiles = false
   std::string history_csv;  // NAME_steps.csv: the steady solve, then one row per time step
   double x_start_b = 0;     // [numerics] x_start_b of the case (the inlet end of the grid) [-]
   double x_start_m = 0;     // the grid's first node [m]

@@ -121,6 +121,21 @@ TEST(ContactScene, SteadyDiscCaseConvergesAndWritesItsFiles) {
   EXPECT_EQ(rows, 513);
 }
 
+// [output] profiles = false: only the steps file is written (the mesh cycle's rule).
+TEST(ContactScene, ProfilesOffWritesOnlyTheStepsFile) {
+  const fs::path dir = TempDir("no_profiles");
+  const std::string path = DiscCase(dir, false, 129);
+  std::ofstream(path, std::ios::app) << "[output]\nprofiles = false\n";
+  ContactRunOptions o;
+  o.quiet = true;
+  o.output_dir = dir.string();
+  const ContactRunResult r = RunContactCase(path, o);
+  ASSERT_TRUE(r.converged());
+  EXPECT_TRUE(r.profile_csv.empty());
+  EXPECT_TRUE(fs::exists(r.history_csv));
+  EXPECT_FALSE(fs::exists(dir / "disc_profile.csv"));
+}
+
 // Rigid, isoviscous, incompressible discs (effects elastic, piezoviscous, compressible off):
 // the case's default grid is sized on the Martin length l = sqrt(2 R h0), not on the Hertz
 // half-width (b = 34 um here, 0.3 l: an inlet at -4.5 b would starve the film by 44 %). The
