@@ -22,7 +22,9 @@ Command AddCaseCommand(CLI::App& app) {
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand("case", "Print the case-file schema or check case files");
   sub->add_flag("--print-default", args->print_default,
-                "Print every key with its default, unit and meaning (a valid case template)");
+                "Print every key with its default, unit and meaning (a template: keep [gear] with "
+                "[operating] or [contact], drop [motor] unless the motor drives the pinion, and "
+                "give the required keys)");
   sub->add_option("--check", args->check, "Check case files; exit 2 with every problem found")
       ->expected(1, -1);
   sub->require_option(1);
@@ -44,6 +46,7 @@ Command AddCaseCommand(CLI::App& app) {
                   plan_text = "mesh cycle of " + std::to_string(plan.s_steps.size() - 1) +
                               " steps (" + plan.step_rule + ") on " +
                               std::to_string(plan.grid.size()) + " nodes (" + plan.grid_rule + ")";
+                  if (!plan.inlet_note.empty()) plan_text += "\n  note: " + plan.inlet_note;
                 } else if (doc.problems().empty() && doc.HasSection("contact")) {
                   const internal::ContactInputs in = internal::ReadContact(doc);
                   if (doc.problems().empty()) internal::CheckFilmScale(doc, in, film);
@@ -52,6 +55,7 @@ Command AddCaseCommand(CLI::App& app) {
                     internal::CheckRoughnessResolution(doc, film, plan.grid.dx_m());
                     plan_text = "line contact on " + std::to_string(plan.grid.size()) + " nodes (" +
                                 plan.rule + ")";
+                    if (!plan.inlet_note.empty()) plan_text += "\n  note: " + plan.inlet_note;
                   }
                 }
               }

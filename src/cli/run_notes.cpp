@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/automatic_grid.hpp"
 #include "tehl/ehl/surface_temperature.hpp"
 #include "tehl/units.hpp"
 
@@ -192,7 +193,8 @@ void NoteCycleEdges(const MeshCycleResult& r) {
 // The inlet note: a film thinned by more than kInletNoteDeficit by the truncated inlet
 // (EstimateInletTruncation; docs/results.md, "The inlet note"), with the x_start_b that brings
 // the deficit to kInletTargetDeficit (p_in ~ |x0|^-3).
-constexpr double kInletNoteDeficit = 0.005;
+// kInletNoteDeficit: scene/automatic_grid.hpp, where `case --check` estimates it before solving.
+using internal::kInletNoteDeficit;
 constexpr double kInletTargetDeficit = 0.002;
 constexpr const char* kInletAdvice = "with grid_points raised in proportion (same spacing)";
 // The smallest [numerics] x_start_b the case schema allows [-].

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tehl/units.hpp"
+
 namespace tehl {
 namespace {
 
@@ -11,6 +13,28 @@ namespace {
 double HertzSeparation(double x, double b, double r) {
   const double a = std::abs(x) / b, s = std::sqrt(a * a - 1.0);
   return b * b / (2.0 * r) * (a * s - std::log(a + s));
+}
+
+// p_in = int_{-inf}^{x0} 12 eta um (h - h*)/h^3 dx for the gap h(x0) = h0 continued upstream
+// with the dry Hertz separation of half-width b (the rigid parabola when b = 0) [Pa].
+double MissingPressure(
+    double x0, double b, double r, double eta, double um, double h0, double h_star) {
+  auto gap = [&](double x) {
+    return b > 0 ? h0 + HertzSeparation(x, b, r) - HertzSeparation(x0, b, r)
+                 : h0 + (x * x - x0 * x0) / (2.0 * r);
+  };
+  // x = x0 / t, t in (0, 1]: dx = -x0 / t^2 dt; the integrand vanishes like t^2 at t -> 0.
+  // Composite Simpson (the integrand is smooth in t; 512 intervals agree with 8192 to 1e-9).
+  constexpr int kIntervals = 512;
+  auto integrand = [&](double t) {
+    if (t <= 0) return 0.0;
+    const double x = x0 / t, h = gap(x);
+    return 12.0 * eta * um * (h - h_star) / (h * h * h) * (-x0) / (t * t);
+  };
+  double sum = integrand(0.0) + integrand(1.0);
+  for (int k = 1; k < kIntervals; ++k)
+    sum += (k % 2 ? 4.0 : 2.0) * integrand(static_cast<double>(k) / kIntervals);
+  return sum / (3.0 * kIntervals);
 }
 
 }  // namespace
@@ -52,23 +76,31 @@ InletTruncation EstimateInletTruncation(const Eigen::VectorXd& p_pa,
   // h - h^3/(12 eta um) dp/dx, dp/dx one-sided to second order.
   const double dpdx = (-3.0 * p_pa[0] + 4.0 * p_pa[1] - p_pa[2]) / (2.0 * in.dx_m);
   const double h_star = h0 - h0 * h0 * h0 / (12.0 * eta * um) * dpdx;
-  // The gap upstream of x0, continued with the film's own far-field shape.
-  auto gap = [&](double x) {
-    return b > 0 ? h0 + HertzSeparation(x, b, r) - HertzSeparation(x0, b, r)
-                 : h0 + (x * x - x0 * x0) / (2.0 * r);
-  };
-  // x = x0 / t, t in (0, 1]: dx = -x0 / t^2 dt; the integrand vanishes like t^2 at t -> 0.
-  // Composite Simpson (the integrand is smooth in t; 512 intervals agree with 8192 to 1e-9).
-  constexpr int kIntervals = 512;
-  auto integrand = [&](double t) {
-    if (t <= 0) return 0.0;
-    const double x = x0 / t, h = gap(x);
-    return 12.0 * eta * um * (h - h_star) / (h * h * h) * (-x0) / (t * t);
-  };
-  double sum = integrand(0.0) + integrand(1.0);
-  for (int k = 1; k < kIntervals; ++k)
-    sum += (k % 2 ? 4.0 : 2.0) * integrand(static_cast<double>(k) / kIntervals);
-  const double p_in = sum / (3.0 * kIntervals);
+  const double p_in = MissingPressure(x0, b, r, eta, um, h0, h_star);
+  if (!std::isfinite(p_in)) return out;
+  out.estimated = true;
+  out.missing_pressure_pa = p_in;
+  out.film_deficit = -std::expm1(-kGrubinExponent * in.pressure_viscosity_per_pa * p_in);
+  return out;
+}
+
+InletTruncation PredictInletTruncation(const InletTruncationInputs& in, double central_film_m) {
+  InletTruncation out;
+  const double eta = in.inlet_viscosity_pa_s, um = in.um_m_s, r = in.reduced_radius_m;
+  const double x0 = in.x_start_m, b = in.half_width_m, w = in.load_n_per_m;
+  if (!(in.pressure_viscosity_per_pa >= 0) || !(eta > 0) || !(um > 0) || !(r > 0) || !(w > 0) ||
+      !(x0 < 0) || !(b > 0) || -x0 <= b || !(central_film_m > 0))
+    return out;
+  out.alpha_p_max = in.pressure_viscosity_per_pa * 2.0 * w / (kPi * b);  // alpha p_H
+  if (!(out.alpha_p_max >= kGrubinMinAlphaP)) {
+    out.isoviscous_inlet_m = IsoviscousInletLength(r, b, um, eta, w);
+    out.short_isoviscous_inlet = -x0 < kShortIsoviscousInlet * out.isoviscous_inlet_m;
+    return out;
+  }
+  // The film is about flat at h_c over the Hertz zone and opens with the dry separation
+  // outside it; h* (where dp/dx = 0) is taken as h_c.
+  const double h0 = central_film_m + HertzSeparation(x0, b, r);
+  const double p_in = MissingPressure(x0, b, r, eta, um, h0, central_film_m);
   if (!std::isfinite(p_in)) return out;
   out.estimated = true;
   out.missing_pressure_pa = p_in;

@@ -125,7 +125,7 @@ ContactGridPlan PlanContactGrid(const ContactInputs& in, const FilmCase& film) {
     units = units.Max(GridUnitsFor(film, b, r, um, w));
     choice.Add(r, um, w);
   }
-  return {choice.Grid(units), choice.Rule(units)};
+  return {choice.Grid(units), choice.Rule(units), choice.InletNote(units)};
 }
 
 }  // namespace tehl::internal

@@ -32,7 +32,8 @@ void CheckFilmScale(Document& doc, const ContactInputs& in, const FilmCase& film
 // or one that spans every table row's Hertzian edge (automatic_grid.hpp).
 struct ContactGridPlan {
   UniformGrid grid;
-  std::string rule;  // how the node count was chosen
+  std::string rule;        // how the node count was chosen
+  std::string inlet_note;  // GridChoice::InletNote: "" or the inlet's estimated cost
 };
 ContactGridPlan PlanContactGrid(const ContactInputs& in, const FilmCase& film);
 

@@ -64,7 +64,13 @@ GridUnits GridUnitsFor(const FilmCase& film,
     return {b_m, b_m};
   const double l_iso = IsoviscousInletLength(r_m, b_m, um_m_s, eta0, w_n_per_m);
   const double unit = kRigidInletUnit * l_iso / kIsoviscousInletLengths;
-  return {std::max(b_m, unit), std::max(b_m, unit * kRigidOutletUnit / kRigidInletUnit)};
+  // The outlet as the rigid film's, 2 sqrt(2 R h_M) at the default x_end_b, with the same
+  // weight h_M R / b^2 but not the inlet's R/2 cap: a thick film ruptures at 0.475 sqrt(2 R h)
+  // however short the inlet.
+  const double h_martin = kMartinFilm * eta0 * um_m_s * r_m / w_n_per_m;
+  const double weight = b_m > 0 ? std::min(1.0, h_martin * r_m / (b_m * b_m)) : 1.0;
+  const double outlet = kRigidOutletUnit * std::sqrt(2.0 * r_m * h_martin) * weight;
+  return {std::max(b_m, unit), std::max(b_m, outlet)};
 }
 
 void CheckRoughnessResolution(Document& doc, const FilmCase& film, double dx_m) {

@@ -94,6 +94,13 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
   double transits = 0;
   GridUnits units;  // b_max, or the longest rigid inlet scale (GridUnitsFor)
   GridChoice choice(film, e_prime_pa);  // the node count (automatic_grid.hpp)
+  // The films that size the automatic grid's inlet: those carrying at least
+  // kInletSizingLoadFraction of the largest load (the single and double contact zones), not
+  // the lightly loaded ends of a relieved path or a dip of the dynamic load.
+  double w_max = 0;
+  for (int i = 0; i <= samples; ++i)
+    for (bool left : {true, false})
+      w_max = std::max(w_max, cycle.At(begin + (end - begin) * i / samples, left).load_n_per_m);
   for (int i = 0; i <= samples; ++i) {
     const double s = begin + (end - begin) * i / samples;
     for (bool left : {true, false}) {
@@ -101,18 +108,20 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
       const double b =
           LineContactHertz(st.load_n_per_m, st.contact.reduced_radius_m, e_prime_pa).half_width_m;
       plan.max_half_width_m = std::max(plan.max_half_width_m, b);
-      // One grid serves the whole path: no film's isoviscous inlet stretches it (the lightly
-      // loaded ends of a relieved path, or a dip of the dynamic load, would stretch the grid of
-      // every film); `tehl run` notes films whose inlet is short (docs/results.md).
+      // One grid serves the whole path: b_max here; the automatic grid stretches its inlet
+      // for the loaded films only (GridChoice), and `tehl run` notes films whose inlet is
+      // short (docs/results.md).
       units = units.Max(GridUnitsFor(film, b, st.contact.reduced_radius_m, st.contact.um_m_s,
                                      st.load_n_per_m, /*isoviscous_inlet=*/false));
-      choice.Add(st.contact.reduced_radius_m, st.contact.um_m_s, st.load_n_per_m);
+      choice.Add(st.contact.reduced_radius_m, st.contact.um_m_s, st.load_n_per_m,
+                 st.load_n_per_m >= kInletSizingLoadFraction * w_max);
       if (left && i > 0)
         transits += st.contact.um_m_s / b * (path.duration_s() * (end - begin) / g / samples);
     }
   }
   plan.grid = choice.Grid(units);
   plan.grid_rule = choice.Rule(units);
+  plan.inlet_note = choice.InletNote(units);
   const UniformGrid& grid = plan.grid;
   CheckRoughnessResolution(doc, film, grid.dx_m());
 

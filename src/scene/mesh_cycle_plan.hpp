@@ -51,6 +51,7 @@ struct MeshCyclePlan {
   std::vector<double> s_steps;  // step positions from A' to E' (A = 0 to E = g_alpha) [m]
   std::string step_rule;        // how the step count was chosen, for the run's report
   std::string grid_rule;        // how the node count was chosen (automatic_grid.hpp)
+  std::string inlet_note;       // GridChoice::InletNote: "" or the inlet's estimated cost
 };
 
 // Plans the run; a user step count below what moving roughness needs (dt <= dx/um) is

@@ -65,6 +65,11 @@ InletTruncation EstimateInletTruncation(const Eigen::VectorXd& p_pa,
                                         const Eigen::VectorXd& h_m,
                                         const InletTruncationInputs& in);
 
+// The same estimate before the film is solved (to size a grid's inlet): the film taken flat
+// at `central_film_m` over the Hertz zone, h* = h_c, the dry Hertz separation upstream, and
+// alpha p_H in place of alpha p_max. Needs b > 0 and w > 0; dx_m is not used.
+InletTruncation PredictInletTruncation(const InletTruncationInputs& in, double central_film_m);
+
 // Grubin's exponent of the film on alpha eta0 um (H ~ (G U)^(8/11)) [-].
 constexpr double kGrubinExponent = 8.0 / 11.0;
 // The smallest alpha p_max for which the estimate is given [-].
