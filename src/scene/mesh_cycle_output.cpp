@@ -1,8 +1,12 @@
 #include "scene/mesh_cycle_output.hpp"
 
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <sstream>
 
 #include "io/csv_table.hpp"
+#include "scene/case_reader.hpp"
 
 namespace tehl::internal {
 namespace {
@@ -85,6 +89,17 @@ std::unique_ptr<Hdf5Writer> BeginMeshCycleHdf5(const std::string& path,
   h5->SetAttribute("/", "program", "tehl 0.1.0");
   h5->SetAttribute("/", "case_file", case_path);
   h5->WriteText("/case", doc.ToToml(), "the case as run, defaults filled (TOML)");
+  // The lubricant file as read, so that the result file alone reproduces the run.
+  const std::string lubricant = ResolveLubricantPath(doc.String("lubricant", "name"), doc.path());
+  if (!lubricant.empty()) {
+    std::error_code ec;
+    const std::filesystem::path full = std::filesystem::absolute(lubricant, ec);
+    h5->SetAttribute("/", "lubricant_file", ec ? lubricant : full.lexically_normal().string());
+    std::ifstream in(lubricant, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    h5->WriteText("/lubricant", text.str(), "the lubricant file as read (TOML)");
+  }
   return h5;
 }
 

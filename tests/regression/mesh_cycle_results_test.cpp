@@ -146,6 +146,14 @@ TEST(MeshCycleResults, FileMatchesDocsResultsMd) {
   const std::string case_text = testing::Hdf5Text(f, "/case");
   EXPECT_NE(case_text.find("grid_points = 257"), std::string::npos) << case_text;
   EXPECT_NE(case_text.find("time_scheme = \"bdf2\""), std::string::npos) << case_text;
+  // /lubricant is the lubricant file read, byte for byte, and lubricant_file where it was.
+  const std::string lubricant_file = testing::Hdf5StringAttribute(f, "/", "lubricant_file");
+  EXPECT_EQ(fs::path(lubricant_file).filename(), "sae40.toml");
+  EXPECT_TRUE(fs::path(lubricant_file).is_absolute()) << lubricant_file;
+  std::ifstream oil(lubricant_file, std::ios::binary);
+  std::ostringstream oil_text;
+  oil_text << oil.rdbuf();
+  EXPECT_EQ(testing::Hdf5Text(f, "/lubricant"), oil_text.str());
   H5Fclose(f);
 
   // The CSV beside it: the /cycle columns with units, one row per step.
