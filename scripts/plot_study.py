@@ -46,8 +46,12 @@ def text(x):
 
 
 def value_text(v):
+    """A varied value as shown: numbers with %g, a TOML string literal without its quotes."""
     if isinstance(v, (bytes, str)):
-        return text(v)
+        t = text(v)
+        if len(t) >= 2 and t[0] == t[-1] and t[0] in "\"'" and "\\" not in t:
+            return t[1:-1]
+        return t
     return f"{v:g}"
 
 

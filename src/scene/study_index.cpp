@@ -76,6 +76,16 @@ std::string CsvText(const std::string& s) {
   return q + "\"";
 }
 
+// A varied value in the CSV: a TOML string literal without escapes as its plain text (the CSV
+// quotes it itself where needed), anything else (numbers, booleans, arrays) as written.
+std::string PlainValue(const std::string& literal) {
+  const size_t n = literal.size();
+  if (n >= 2 && (literal[0] == '"' || literal[0] == '\'') && literal[n - 1] == literal[0] &&
+      literal.find('\\') == std::string::npos && literal.find(literal[0], 1) == n - 1)
+    return literal.substr(1, n - 2);
+  return literal;
+}
+
 std::string Num(double x) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", x);
@@ -207,7 +217,9 @@ std::vector<std::string> WriteStudyIndex(const Study& study, std::vector<SceneRo
   for (const auto& r : rows) {
     csv << r.scene;
     for (size_t i = 0; i < study.parameters.size(); ++i)
-      csv << ',' << CsvText(study.parameters[i].values_toml[study.scenes[r.scene].value_index[i]]);
+      csv << ','
+          << CsvText(
+                 PlainValue(study.parameters[i].values_toml[study.scenes[r.scene].value_index[i]]));
     for (const SummaryColumn& c : SummaryColumns()) csv << ',' << Num(r.*c.field);
     csv << ',' << r.steps << ',' << CsvText(r.status) << ',' << (r.computed ? 1 : 0) << ','
         << CsvText(r.result_path) << '\n';

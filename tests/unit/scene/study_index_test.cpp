@@ -164,6 +164,26 @@ testing::RunResult Sweep(const std::string& dir,
   return testing::RunTehl("sweep -j 2 -q -o '" + dir + "/out' '" + dir + "/study.toml'");
 }
 
+// A string varied in a study is its plain text in index.csv (the HDF5 index keeps the TOML
+// literal): sae40, not """sae40""".
+TEST(StudyIndex, AVariedStringIsItsPlainTextInTheCsv) {
+  const std::string dir = testing::UniqueTempPath("oil_study"), out = dir + "/out";
+  const testing::RunResult r =
+      Sweep(dir,
+            "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nspeed_1_m_s = 1.0\n"
+            "speed_2_m_s = 1.0\nload_n_per_m = 1.0e5\n[lubricant]\nname = \"sae40\"\n"
+            "[numerics]\ngrid_points = 129\n",
+            "lubricant.name", "[\"sae40\", \"sae90\"]");
+  ASSERT_TRUE(r.exited) << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto cells = ReadCsvCells(out + "/index.csv");
+  ASSERT_EQ(cells.size(), 3u);
+  const size_t i = Column(cells[0], "lubricant.name");
+  EXPECT_EQ(cells[1][i], "sae40");
+  EXPECT_EQ(cells[2][i], "sae90");
+  fs::remove_all(dir);
+}
+
 // A heavy slow disc (3 MN/m, p_H 3.3 GPa, 0.05 m/s; docs/results.md, "The edge note") on 513
 // and 8193 nodes: the index keeps each scene's fewest cells across the Hertzian edge (0.67
 // and about 18 measured with `tehl run`), and the sweep notes the one scene under 10.
