@@ -13,9 +13,18 @@
 #include "scene/case_reader.hpp"
 #include "tehl/scene/contact_scene.hpp"
 #include "tehl/scene/mesh_cycle_scene.hpp"
+#include "tehl/units.hpp"
 
 namespace tehl::cli {
 namespace {
+
+// Which film law the friction and temperatures come from; the Newtonian one overestimates
+// both wherever the film slides (docs/thermal.md).
+const char* FilmModelText(bool non_newtonian) {
+  return non_newtonian ? "Ree-Eyring film"
+                       : "Newtonian film (overestimates friction where it slides; "
+                         "non_newtonian = true for Ree-Eyring)";
+}
 
 struct RunArgs {
   std::string case_path;
@@ -54,8 +63,11 @@ int RunGear(const RunArgs& a) {
   if (pitch_step < r.steps.size() && Usable(r, pitch_step) &&
       (passed_pitch || r.steps.size() == static_cast<size_t>(r.planned_steps) + 1)) {
     const MeshCycleStep& pitch = r.steps[pitch_step];
-    std::printf("at the pitch point (s = %.4g mm): h_c = %.6g m, h_min = %.6g m, p_max = %.6g Pa\n",
-                pitch.s_m * 1e3, pitch.h_c_m, pitch.h_min_m, pitch.p_max_pa);
+    std::printf(
+        "at the pitch point (s = %.4g mm): h_c = %.6g m, h_min = %.6g m, p_max = %.6g Pa "
+        "(Hertz p_H = %.4g Pa)\n",
+        pitch.s_m * 1e3, pitch.h_c_m, pitch.h_min_m, pitch.p_max_pa,
+        LineContactHertz(pitch.load_n_per_m, pitch.reduced_radius_m, r.e_prime_pa).max_pressure_pa);
   } else if (passed_pitch) {
     std::printf("the step at the pitch point (s = %.4g mm) did not converge\n", r.s_c_m * 1e3);
   } else {
@@ -70,9 +82,9 @@ int RunGear(const RunArgs& a) {
       mu += r.steps[k].friction_coefficient;
     }
     const MeshCycleStep& h = r.steps[hottest];
-    std::printf("thermal: T_max = %.5g K at s = %.4g mm (SRR %+.3f), mean mu = %.4g%s\n", h.t_max_k,
-                h.s_m * 1e3, h.srr, mu / static_cast<double>(ok),
-                ok == r.steps.size() ? "" : " (converged steps)");
+    std::printf("thermal: T_max = %.5g K at s = %.4g mm (SRR %+.3f), mean mu = %.4g%s, %s\n",
+                h.t_max_k, h.s_m * 1e3, h.srr, mu / static_cast<double>(ok),
+                ok == r.steps.size() ? "" : " (converged steps)", FilmModelText(r.non_newtonian));
   }
   PrintCycleFlash(r);
   NoteNewtonianFriction(r, [](size_t k, const MeshCycleStep& s) {
@@ -113,12 +125,21 @@ int RunContact(const RunArgs& a) {
   const ContactRunResult r = RunContactCase(a.case_path, o);
   const auto& last = r.steps.back();
   std::printf("grid %d nodes (%s)\n", r.grid_points, r.grid_rule.c_str());
-  std::printf("h_min = %.6g m, h_c = %.6g m, p_max = %.6g Pa\n", last.h_min_m, last.h_c_m,
+  if (!last.summary.usable())
+    std::printf("NOT CONVERGED (%s): the film below is the solver's best iterate, not a result\n",
+                ToString(last.summary.termination).c_str());
+  std::printf("h_min = %.6g m, h_c = %.6g m, p_max = %.6g Pa", last.h_min_m, last.h_c_m,
               last.p_max_pa);
+  if (last.half_width_m > 0)  // elastic: the Hertz pressure beside the film's peak
+    std::printf(" (Hertz p_H = %.4g Pa)", 2.0 * last.load_n_per_m / (kPi * last.half_width_m));
+  std::printf("\n");
+  if (last.summary.usable() && r.thermal)
+    std::printf("thermal: T_max = %.5g K (rise %.3g K), %s\n", last.t_max_k,
+                last.t_max_k - r.inlet_temperature_k, FilmModelText(r.non_newtonian));
   if (last.summary.usable() && last.flash_rise_blok_k > 0) {  // sliding, elastic
-    std::printf("mu = %.4g; flash temperature (Blok%s, with this mu): rise %.3g K",
-                last.friction_coefficient, r.finite_peclet ? ", finite Peclet" : "",
-                last.flash_rise_blok_k);
+    std::printf("mu = %.4g (%s); flash temperature (Blok%s, with this mu): rise %.3g K",
+                last.friction_coefficient, FilmModelText(r.non_newtonian),
+                r.finite_peclet ? ", finite Peclet" : "", last.flash_rise_blok_k);
     if (last.t_max_k > r.inlet_temperature_k)  // thermal: the film's own surfaces beside it
       std::printf("; the film's surfaces: max rise %.3g K (body 1), %.3g K (body 2)",
                   last.t1_max_k - r.inlet_temperature_k, last.t2_max_k - r.inlet_temperature_k);
@@ -127,7 +148,7 @@ int RunContact(const RunArgs& a) {
   if (last.summary.usable()) {
     NoteContactSpike(last.outlet_spike);
     NoteContactEdge(last.hertz_edge);
-    NoteContactInlet(last.inlet, r.x_start_b, r.x_start_m);
+    NoteContactInlet(last.inlet, r.x_start_b, {r.x_start_m, r.x_end_m, r.grid_points});
   }
   NoteContactPeclet(r);
   NoteNewtonianFriction(r, [](size_t k, const ContactStepRecord& s) {

@@ -196,20 +196,31 @@ void NoteCycleEdges(const MeshCycleResult& r) {
 // kInletNoteDeficit: scene/automatic_grid.hpp, where `case --check` estimates it before solving.
 using internal::kInletNoteDeficit;
 constexpr double kInletTargetDeficit = 0.002;
-constexpr const char* kInletAdvice = "with grid_points raised in proportion (same spacing)";
 // The smallest [numerics] x_start_b the case schema allows [-].
 constexpr double kMinStartB = -100.0;
+
+// "[numerics] x_start_b = X with grid_points = N (the same spacing)": the grid of `g` with its
+// inlet moved from x_start_b to new_b (UniformGrid::NodesFromStart).
+std::string InletAdvice(double new_b, double x_start_b, const GridSpan& g) {
+  char buf[160];
+  const UniformGrid grid(g.x0_m, g.x_end_m, g.nodes);
+  std::snprintf(buf, sizeof buf,
+                "[numerics] x_start_b = %.3g with grid_points = %d (the same spacing)", new_b,
+                grid.NodesFromStart(g.x0_m * new_b / x_start_b));
+  return buf;
+}
 
 // A nearly isoviscous film (alpha p_max < kGrubinMinAlphaP) gets no Grubin estimate; its
 // inlet is noted when it starts downstream of -l_iso (InletTruncation::short_isoviscous_inlet).
 void PrintIsoviscousInletNote(const InletTruncation& t,
                               double x_start_b,
-                              double x0_m,
+                              const GridSpan& g,
                               const std::string& where) {
+  const double x0_m = g.x0_m;
   const double needed = x_start_b * t.isoviscous_inlet_m / -x0_m;
   char advice[320];
   if (needed >= kMinStartB)
-    std::snprintf(advice, sizeof advice, "[numerics] x_start_b = %.3g %s", needed, kInletAdvice);
+    std::snprintf(advice, sizeof advice, "%s", InletAdvice(needed, x_start_b, g).c_str());
   else
     std::snprintf(advice, sizeof advice,
                   "that would be x_start_b = %.3g, beyond the %g allowed: such a film needs "
@@ -225,18 +236,19 @@ void PrintIsoviscousInletNote(const InletTruncation& t,
       100 * -x0_m / t.isoviscous_inlet_m, 1e3 * t.isoviscous_inlet_m, advice);
 }
 
-void NoteContactInlet(const InletTruncation& t, double x_start_b, double x0_m) {
+void NoteContactInlet(const InletTruncation& t, double x_start_b, const GridSpan& g) {
   if (!t.estimated && t.short_isoviscous_inlet) {
-    PrintIsoviscousInletNote(t, x_start_b, x0_m, "the film");
+    PrintIsoviscousInletNote(t, x_start_b, g, "the film");
     return;
   }
   if (!t.estimated || t.film_deficit <= kInletNoteDeficit) return;
   std::printf(
       "note: the inlet at x_start_b = %.3g cuts off %.3g MPa of inlet pressure: the film is "
       "about %.3g %% thinner than with an unbounded inlet (Grubin estimate, docs/results.md); "
-      "[numerics] x_start_b = %.3g %s brings that to about %.2g %%\n",
+      "%s brings that to about %.2g %%\n",
       x_start_b, t.missing_pressure_pa * 1e-6, 100 * t.film_deficit,
-      t.InletFor(x_start_b, kInletTargetDeficit), kInletAdvice, 100 * kInletTargetDeficit);
+      InletAdvice(t.InletFor(x_start_b, kInletTargetDeficit), x_start_b, g).c_str(),
+      100 * kInletTargetDeficit);
 }
 
 void NoteCycleInlet(const MeshCycleResult& r) {
@@ -261,7 +273,8 @@ void NoteCycleInlet(const MeshCycleResult& r) {
     std::snprintf(where, sizeof where,
                   "in %zu of the %zu films (the worst at s = %.4g mm) the film", short_count,
                   UsableSteps(r), r.steps[shortest].s_m * 1e3);
-    PrintIsoviscousInletNote(inlet[shortest], r.x_start_b, r.x_m.front(), where);
+    PrintIsoviscousInletNote(inlet[shortest], r.x_start_b,
+                             {r.x_m.front(), r.x_m.back(), static_cast<int>(r.x_m.size())}, where);
   }
   size_t worst = inlet.size();
   for (size_t k = 0; k < r.steps.size() && k < inlet.size(); ++k)
@@ -279,10 +292,12 @@ void NoteCycleInlet(const MeshCycleResult& r) {
   }
   std::printf(
       "note: the inlet at x_start_b = %.3g thins the films by up to %.3g %% against an "
-      "unbounded inlet (at s = %.4g mm%s; Grubin estimate, docs/results.md): [numerics] "
-      "x_start_b = %.3g %s brings that to about %.2g %%\n",
+      "unbounded inlet (at s = %.4g mm%s; Grubin estimate, docs/results.md): %s brings that "
+      "to about %.2g %%\n",
       r.x_start_b, 100 * inlet[worst].film_deficit, r.steps[worst].s_m * 1e3, at_pitch.c_str(),
-      inlet[worst].InletFor(r.x_start_b, kInletTargetDeficit), kInletAdvice,
+      InletAdvice(inlet[worst].InletFor(r.x_start_b, kInletTargetDeficit), r.x_start_b,
+                  {r.x_m.front(), r.x_m.back(), static_cast<int>(r.x_m.size())})
+          .c_str(),
       100 * kInletTargetDeficit);
 }
 

@@ -51,7 +51,12 @@ void NoteCycleEdges(const MeshCycleResult& r);
 // Notes an inlet that thins the film by more than kInletNoteDeficit, or one shorter than a
 // nearly isoviscous film needs (InletTruncation::short_isoviscous_inlet), with x0 the grid's
 // first node [m] (one film; a cycle).
-void NoteContactInlet(const InletTruncation& t, double x_start_b, double x0_m);
+// The film grid's ends and node count, for advice that keeps its spacing.
+struct GridSpan {
+  double x0_m = 0, x_end_m = 0;  // first and last node [m]
+  int nodes = 0;                 // [-]
+};
+void NoteContactInlet(const InletTruncation& t, double x_start_b, const GridSpan& g);
 void NoteCycleInlet(const MeshCycleResult& r);
 
 // `format` with k and value, e.g. Where("step %zu (s = %.4g mm)", 70, 4.913).
@@ -125,8 +130,10 @@ void NoteTimeError(const std::vector<Step>& steps, Where where) {
   if (count == 0) return;
   std::printf(
       "note: %zu of %zu time steps have an estimated local time error above %g %% (largest "
-      "%.2g at %s); [numerics] time_tolerance splits such steps into substeps until their "
-      "estimate is below it (docs/case_format.md: what it costs, and where it helps)\n",
+      "%.2g at %s); the estimate is per step, and errors carried over from earlier steps can "
+      "make a film further off than it says: [numerics] time_tolerance splits steps into "
+      "substeps until their estimate is below it, and a run with it is the check "
+      "(docs/case_format.md: what it costs, and where it helps)\n",
       count, steps.size() - 1, 100 * kTimeErrorNote, steps[worst].summary.time_error,
       where(worst, steps[worst]).c_str());
 }

@@ -33,6 +33,12 @@ std::vector<double> UniformGrid::Nodes() const {
   return x;
 }
 
+int UniformGrid::NodesFromStart(double x_start_m) const {
+  long cells = std::lround(std::ceil((x_end_m() - x_start_m) / dx_ - 1e-9));
+  if (cells % 2) ++cells;
+  return static_cast<int>(std::max(cells, 4L) + 1);
+}
+
 int UniformGrid::NearestNode(double x_m) const {
   const long i = std::lround((x_m - x0_) / dx_);
   return static_cast<int>(std::clamp<long>(i, 0, n_ - 1));

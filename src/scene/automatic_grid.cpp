@@ -145,10 +145,10 @@ std::string GridChoice::InletNote(const GridUnits& given) const {
   std::snprintf(buf, sizeof buf,
                 "the inlet at x = %.3g mm thins the films by up to %.1f %% (Grubin's estimate "
                 "before solving); one at %.3g mm keeps it below %.1f %%: leave grid_points out "
-                "for the automatic grid, or set x_start_b = %.3g with grid_points raised in "
-                "proportion",
+                "for the automatic grid, or set x_start_b = %.3g with grid_points = %d (the same "
+                "spacing)",
                 x0 * 1e3, 100 * deficit, -inlet_need_m_ * 1e3, 100 * kInletTargetDeficit,
-                film_.x_start_b * inlet_need_m_ / -x0);
+                film_.x_start_b * inlet_need_m_ / -x0, Grid(given).NodesFromStart(-inlet_need_m_));
   return buf;
 }
 

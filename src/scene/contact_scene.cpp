@@ -75,6 +75,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   ContactRunResult result;
   result.x_start_b = film.x_start_b;
   result.x_start_m = grid.x_start_m();
+  result.x_end_m = grid.x_end_m();
   result.grid_points = grid.size();
   result.grid_rule = plan.rule;
   result.inlet_temperature_k = film.inlet_temperature_k;

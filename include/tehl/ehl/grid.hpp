@@ -23,6 +23,10 @@ class UniformGrid {
   double x(int i) const { return x0_ + i * dx_; }              // node i [m]
   std::vector<double> Nodes() const;                           // all x_i [m]
   int NearestNode(double x_m) const;                           // clamped to [0, n-1]
+  // The odd node count (a node stays at x = 0 on grids symmetric in their cells) of a grid
+  // with this spacing from x_start_m to this grid's last node: how many nodes a longer inlet
+  // needs at the same resolution [-].
+  int NodesFromStart(double x_start_m) const;
 
  private:
   double x0_ = 0, dx_ = 0;

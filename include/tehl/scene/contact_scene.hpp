@@ -53,6 +53,7 @@ struct ContactRunResult {
   std::string history_csv;  // NAME_steps.csv: the steady solve, then one row per time step
   double x_start_b = 0;     // [numerics] x_start_b of the case (the inlet end of the grid) [-]
   double x_start_m = 0;     // the grid's first node [m]
+  double x_end_m = 0;       // the grid's last node [m]
   int grid_points = 0;      // nodes of the grid the film was solved on [-]
   std::string grid_rule;    // how that node count was chosen
   double inlet_temperature_k = 0;  // T0 of the oil and the bulk of both bodies [K]

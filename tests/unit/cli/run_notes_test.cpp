@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <string>
 
 #include "run_tehl.hpp"
@@ -352,8 +353,26 @@ TEST(RunNotes, AShortInletOfANearlyIsoviscousDiscIsNoted) {
   ASSERT_TRUE(r.exited);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("note: the film is nearly isoviscous"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("[numerics] x_start_b = -4.5 with grid_points raised"), std::string::npos)
+  // The advice keeps the spacing: N - 1 cells of the run's dx from the new inlet to the
+  // outlet, N odd (the profile CSV gives the run's grid).
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m,
+                                std::regex(R"(\[numerics\] x_start_b = -4\.5 with grid_points = )"
+                                           R"((\d+) \(the same spacing\))")))
       << r.out;
+  const int n = std::stoi(m[1]);
+  EXPECT_EQ(n % 2, 1);
+  std::smatch w;
+  ASSERT_TRUE(std::regex_search(r.out, w, std::regex(R"(wrote (\S+_profile\.csv))")));
+  std::ifstream csv(w[1].str());
+  std::string line;
+  std::getline(csv, line);  // header
+  std::vector<double> x;
+  while (std::getline(csv, line)) x.push_back(std::stod(line.substr(0, line.find(','))));
+  ASSERT_EQ(x.size(), 513u);
+  const double dx = (x.back() - x.front()) / 512, x0_new = 4.5 * x.front();
+  EXPECT_GE((n - 1) * dx, x.back() - x0_new - 1e-9 * dx);
+  EXPECT_LT((n - 3) * dx, x.back() - x0_new);
   const RunResult d = RunTehl("run -q '" + disc("") + "'");
   ASSERT_EQ(d.exit_code, 0) << d.out << d.err;
   EXPECT_EQ(d.out.find("nearly isoviscous"), std::string::npos) << d.out;

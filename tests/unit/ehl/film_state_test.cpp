@@ -38,5 +38,15 @@ TEST(FilmState, EmptyStateHasZeroSummaries) {
   EXPECT_EQ(s.CentralFilm(UniformGrid(-1e-3, 1e-3, 65)), 0.0);
 }
 
+// A longer inlet at the same spacing: -4.5 .. 1.5 on 513 nodes (dx = 6/512) from -9 needs
+// 10.5 / dx = 896 cells, 897 nodes (odd, and x = 0 stays a node); from -9.01 one cell more
+// rounds up to 898 cells, 899 nodes.
+TEST(UniformGrid, NodesFromStartKeepTheSpacingAndAnOddCount) {
+  const UniformGrid g(-4.5, 1.5, 513);
+  EXPECT_EQ(g.NodesFromStart(-9.0), 897);
+  EXPECT_EQ(g.NodesFromStart(-9.01), 899);
+  EXPECT_EQ(g.NodesFromStart(-4.5), 513);
+}
+
 }  // namespace
 }  // namespace tehl
