@@ -33,6 +33,15 @@ std::string Fmt(const char* format, double x) {
 }
 
 // One line "label  pinion  wheel".
+// Why a stiffness method does not apply: every rule it breaks, with the value and the range.
+std::string WhyNot(const InputError& e) {
+  std::string s;
+  for (const InputProblem& p : e.problems())
+    s += (s.empty() ? "" : "; ") + p.rule + (p.value.empty() ? "" : " (" + p.value + ")") +
+         (p.allowed.empty() ? "" : ", valid for " + p.allowed);
+  return s;
+}
+
 void Row(std::ostream& o, const std::string& label, const std::string& a, const std::string& b) {
   char buf[160];
   std::snprintf(buf, sizeof buf, "  %-30s %14s %14s\n", label.c_str(), a.c_str(), b.c_str());
@@ -75,8 +84,14 @@ void Geometry(std::ostream& o, const internal::GearCase& c) {
   Row(o, "top land s_a [mm]", mm(g1.tip_thickness_m), mm(g2.tip_thickness_m));
   Row(o, "pointed-tip radius [mm]", g1.internal ? "-" : mm(g1.pointed_tip_radius_m),
       g2.internal ? "-" : mm(g2.pointed_tip_radius_m));
-  Row(o, "x_min without undercut", Fmt("%.4f", g1.drive.min_shift_no_undercut),
-      g2.internal ? "-" : Fmt("%.4f", g2.drive.min_shift_no_undercut));
+  // Asymmetric teeth: each flank has its own limit; the flank of the smaller pressure angle
+  // (usually the coast flank) undercuts first and governs.
+  for (Flank f : {Flank::kDrive, Flank::kCoast}) {
+    if (f == Flank::kCoast && !asym) break;
+    Row(o, asym ? "x_min without undercut, " + ToString(f) : std::string("x_min without undercut"),
+        Fmt("%.4f", g1.flank(f).min_shift_no_undercut),
+        g2.internal ? "-" : Fmt("%.4f", g2.flank(f).min_shift_no_undercut));
+  }
   if (asym)
     Row(o, "K = r_bc / r_bd", Fmt("%.4f", g1.BaseRadiusRatio()), Fmt("%.4f", g2.BaseRadiusRatio()));
   o << "  centre distance a = " << mm(p.center_distance_m())
@@ -159,7 +174,7 @@ void Stiffness(std::ostream& o, const internal::GearCase& c) {
                     per_width(m.max_n_per_m).c_str(), per_width(m.single_pair_max_n_per_m).c_str());
       o << buf;
     } catch (const InputError& e) {
-      o << "  " << method << ": not applicable: " << e.problems().front().rule << "\n";
+      o << "  " << method << ": not applicable: " << WhyNot(e) << "\n";
     }
   }
   try {
@@ -169,7 +184,7 @@ void Stiffness(std::ostream& o, const internal::GearCase& c) {
     o << "  iso (6336-1 B)     c' = " << Fmt("%.3f", iso.c_prime_n_per_mm_um)
       << ", c_gamma_alpha = " << Fmt("%.3f", iso.c_gamma_alpha_n_per_mm_um) << "\n";
   } catch (const InputError& e) {
-    o << "  iso: not applicable: " << e.problems().front().rule << "\n";
+    o << "  iso: not applicable: " << WhyNot(e) << "\n";
   }
   o << "  load sharing: " << ToString(c.load_sharing)
     << (c.load_sharing == LoadSharing::kStiffness ? " (" + c.mesh_stiffness + ")" : std::string())

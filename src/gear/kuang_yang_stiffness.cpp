@@ -47,7 +47,7 @@ std::vector<InputProblem> KuangYangStiffness::Validate(const ToothBlank& b,
   }
   if (!(std::abs(b.youngs_modulus_pa / kSteelModulusPa - 1.0) <= kSteelTolerance)) {
     out.push_back(MethodRangeProblem(FormatValue(b.youngs_modulus_pa),
-                                     who + "the fit is for steel gears [Pa]",
+                                     who + "the fit is for steel gears: E [Pa]",
                                      "185e9 <= E <= 227e9 (steel)"));
   }
   if (b.drive_pressure_angle_rad != b.coast_pressure_angle_rad) {

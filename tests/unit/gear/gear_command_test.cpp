@@ -213,6 +213,28 @@ TEST_F(GearCommand, ProfileCsvListsBothGears) {
     EXPECT_NE(text.find(s), std::string::npos) << s;
 }
 
+// Asymmetric teeth have one undercut limit per flank, x_min = h_a* - z sin^2(alpha) / 2
+// (Mabie & Reinholtz): for the 35-tooth pinion of cases/asymmetric_35_20.toml 1 - 35
+// sin^2(35 deg) / 2 = -4.7573 on the drive flank and 1 - 35 sin^2(20 deg) / 2 = -1.0471 on the
+// coast flank, which governs.
+TEST_F(GearCommand, AsymmetricReportGivesTheUndercutLimitOfEachFlank) {
+  const Result r = Tehl("gear cases/asymmetric_35_20.toml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto limit = [](double deg) {
+    const double s = std::sin(deg * M_PI / 180);
+    return 1.0 - 35 * s * s / 2;
+  };
+  char drive[32], coast[32];
+  std::snprintf(drive, sizeof drive, "%.4f", limit(35.0));
+  std::snprintf(coast, sizeof coast, "%.4f", limit(20.0));
+  const size_t d = r.out.find("x_min without undercut, drive");
+  const size_t c = r.out.find("x_min without undercut, coast");
+  ASSERT_NE(d, std::string::npos) << r.out;
+  ASSERT_NE(c, std::string::npos) << r.out;
+  EXPECT_EQ(r.out.substr(d, 60).find(drive) != std::string::npos, true) << drive << r.out;
+  EXPECT_EQ(r.out.substr(c, 60).find(coast) != std::string::npos, true) << coast << r.out;
+}
+
 TEST_F(GearCommand, EveryCaseOfTheRepositoryIsValid) {
   const Result r = Tehl(
       "case --check cases/seed004_sae40.toml cases/seed004_sae90.toml "
