@@ -24,7 +24,8 @@ void WriteCsvTable(const std::string& path, const std::vector<CsvColumn>& column
   char cell[40];
   for (size_t i = 0; i < rows; ++i) {
     for (size_t j = 0; j < columns.size(); ++j) {
-      std::snprintf(cell, sizeof cell, "%s%.9e", j ? "," : "", columns[j].values[i]);
+      std::snprintf(cell, sizeof cell, columns[j].integer ? "%s%.0f" : "%s%.9e", j ? "," : "",
+                    columns[j].values[i]);
       text += cell;
     }
     text += "\n";

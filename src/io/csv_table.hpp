@@ -10,9 +10,11 @@ namespace tehl::internal {
 struct CsvColumn {
   std::string header;          // column name with its unit, e.g. "h_min_m"
   std::vector<double> values;  // one per row
+  bool integer = false;        // counts and flags: written without a fraction ("%.0f")
 };
 
-// Writes the columns (all of one length) with a header line, "%.9e" per value. Throws
+// Writes the columns (all of one length) with a header line, "%.9e" per value ("%.0f" in
+// integer columns). Throws
 // NonFiniteError (tehl/io/hdf5_writer.hpp) naming the column and row of a NaN or Inf, and
 // std::filesystem::filesystem_error when the file cannot be written (io/atomic_file.hpp);
 // nothing is left under `path` then.

@@ -11,6 +11,7 @@ namespace {
 struct Column {
   const char* header;
   std::vector<double> values;
+  bool integer = false;  // counts and flags: "%.0f"
 };
 
 // Refuses the first NaN or Inf of any column, naming the file, the column and the row.
@@ -31,7 +32,8 @@ std::string Cells(const std::vector<Column>& columns, size_t row) {
   std::string o;
   char cell[40];
   for (size_t j = 0; j < columns.size(); ++j) {
-    std::snprintf(cell, sizeof cell, "%s%.9e", j ? "," : "", columns[j].values[row]);
+    std::snprintf(cell, sizeof cell, columns[j].integer ? "%s%.0f" : "%s%.9e", j ? "," : "",
+                  columns[j].values[row]);
     o += cell;
   }
   return o;
@@ -46,9 +48,15 @@ std::string ContactStepsCsv(const std::string& file, const std::vector<ContactSt
                              {"wall_time_s", {}}, {"spike_cells", {}}, {"inlet_deficit", {}}};
   // Columns added later go after the existing ones, before the text column (readers look
   // columns up by name; docs/results.md).
-  std::vector<Column> added = {{"t1_max_k", {}},       {"t2_max_k", {}},   {"dT_flash_blok_k", {}},
-                               {"steady_restart", {}}, {"edge_cells", {}}, {"substeps", {}},
-                               {"time_error", {}}};
+  std::vector<Column> added = {{"t1_max_k", {}},
+                               {"t2_max_k", {}},
+                               {"dT_flash_blok_k", {}},
+                               {"steady_restart", {}, true},
+                               {"edge_cells", {}},
+                               {"substeps", {}, true},
+                               {"time_error", {}},
+                               {"um_m_s", {}},
+                               {"SRR", {}}};
   for (const ContactStepRecord& s : steps) {
     const double row[] = {s.time_s,
                           s.load_n_per_m,
@@ -63,13 +71,16 @@ std::string ContactStepsCsv(const std::string& file, const std::vector<ContactSt
                           s.outlet_spike.found ? s.outlet_spike.width_cells : -1.0,
                           s.inlet.estimated ? s.inlet.film_deficit : -1.0};
     for (size_t j = 0; j < num.size(); ++j) num[j].values.push_back(row[j]);
+    const double um = 0.5 * (s.u1_m_s + s.u2_m_s);  // > 0 in every run (u1 + u2 > 0 is a rule)
     const double later[] = {s.t1_max_k,
                             s.t2_max_k,
                             s.flash_rise_blok_k,
                             s.restarted() ? 1.0 : 0.0,
                             s.hertz_edge.width_m > 0 ? s.hertz_edge.width_cells : -1.0,
                             static_cast<double>(s.summary.substeps),
-                            s.summary.time_error};
+                            s.summary.time_error,
+                            um,
+                            um > 0 ? (s.u1_m_s - s.u2_m_s) / um : 0.0};
     for (size_t j = 0; j < added.size(); ++j) added[j].values.push_back(later[j]);
   }
   CheckColumns(file, num);

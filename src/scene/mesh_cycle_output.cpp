@@ -257,18 +257,18 @@ void WriteMeshCycleCsv(const std::string& path, const MeshCycleResult& r) {
   // unconverged step too (its termination is in the HDF5 file's /solver/termination).
   std::vector<double> converged;
   for (const MeshCycleStep& k : r.steps) converged.push_back(k.summary.usable() ? 1.0 : 0.0);
-  table.push_back({"converged", converged});
+  table.push_back({"converged", converged, true});
   // 1 where the transient step failed and the row is the steady film at its point.
   std::vector<double> restarted;
   for (const MeshCycleStep& k : r.steps) restarted.push_back(k.restarted() ? 1.0 : 0.0);
-  table.push_back({"steady_restart", restarted});
+  table.push_back({"steady_restart", restarted, true});
   // The time substeps of each step and its estimated local time error (-1: not estimated).
   std::vector<double> substeps, time_error;
   for (const MeshCycleStep& k : r.steps) {
     substeps.push_back(k.summary.substeps);
     time_error.push_back(k.summary.time_error);
   }
-  table.push_back({"substeps", substeps});
+  table.push_back({"substeps", substeps, true});
   table.push_back({"time_error", time_error});
   WriteCsvTable(path, table);
 }

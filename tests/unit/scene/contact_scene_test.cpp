@@ -281,8 +281,15 @@ TEST(ContactScene, IsothermalDiscRecordsTheInletTemperatureAndRollingFriction) {
                                          "edge_cells",
                                          "substeps",
                                          "time_error",
+                                         "um_m_s",
+                                         "SRR",
                                          "termination"};
   EXPECT_EQ(steps.head, head);
+  // Counts and flags are integers; um and SRR of the disc's 1 m/s rolling.
+  EXPECT_EQ(steps.rows[0][steps.Col("steady_restart")], "0");
+  EXPECT_EQ(steps.rows[0][steps.Col("substeps")], "1");  // the steady solve: one piece
+  EXPECT_DOUBLE_EQ(steps.At(0, "um_m_s"), 1.0);
+  EXPECT_DOUBLE_EQ(steps.At(0, "SRR"), 0.0);
   // Isothermal: the surfaces stay at the inlet temperature.
   EXPECT_NEAR(steps.At(0, "t1_max_k"), kInletK, 1e-9 * kInletK);
   EXPECT_NEAR(steps.At(0, "t2_max_k"), kInletK, 1e-9 * kInletK);
