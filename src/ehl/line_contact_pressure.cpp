@@ -409,6 +409,7 @@ FilmState LineContactSolver::Impl::SequencedGuess(const ContactConditions& c,
     FilmEffects coarse_effects = eff_;
     coarse_effects.thermal = false;
     coarse_effects.non_newtonian = false;
+    coarse_effects.finite_peclet = false;
     coarse_ = std::make_unique<Impl>(UniformGrid(grid_.x_start_m(), grid_.x_end_m(), nc), e_prime_,
                                      lub_, coarse_effects, o, s1_, s2_, solids_);
   }

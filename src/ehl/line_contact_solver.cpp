@@ -96,7 +96,10 @@ std::vector<std::string> LineContactSolver::Options::Validate() const {
   auto rule = [&](bool ok, const char* field, double v, const char* c) {
     if (!ok)
       bad.push_back(std::string("LineContactSolver::Options::") + field + " = " +
-                    internal::FormatReal(v) + " violates " + c);
+                    (v == std::trunc(v) && std::abs(v) < 1e15
+                         ? std::to_string(static_cast<long long>(v))
+                         : internal::FormatReal(v)) +
+                    " violates " + c);
   };
   rule(upwind_order == 1 || upwind_order == 2, "upwind_order", upwind_order, "1 or 2");
   rule(tolerance > 0 && tolerance < 1, "tolerance", tolerance, "in (0, 1)");
@@ -127,6 +130,15 @@ std::vector<std::string> LineContactSolver::Options::Validate() const {
   rule(thermal_relaxation > 0 && thermal_relaxation <= 1, "thermal_relaxation", thermal_relaxation,
        "in (0, 1]");
   rule(coupling_newton_after >= 0, "coupling_newton_after", coupling_newton_after, ">= 0");
+  rule(coarse_grid_nodes >= 5, "coarse_grid_nodes", coarse_grid_nodes, ">= 5");
+  const int solver = static_cast<int>(linear_solver);
+  rule(solver >= static_cast<int>(LinearSolverKind::kAuto) &&
+           solver <= static_cast<int>(LinearSolverKind::kReusedLu),
+       "linear_solver", solver, "a LinearSolverKind");
+  const int scheme = static_cast<int>(time_scheme);
+  rule(scheme == static_cast<int>(TimeScheme::kBdf1) ||
+           scheme == static_cast<int>(TimeScheme::kBdf2),
+       "time_scheme", scheme, "a TimeScheme");
   return bad;
 }
 
@@ -172,8 +184,17 @@ LineContactSolver::Impl::Impl(const UniformGrid& grid,
       sys_(grid.size(), grid.dx_m(), opt.upwind_order) {
   ProblemList bad;
   for (const auto& m : opt.Validate()) bad.Add({"", 0, "LineContactSolver::Options", "", m, ""});
-  if (!(e_prime > 0))
-    bad.Add({"", 0, "e_prime_pa", internal::FormatReal(e_prime), "must be > 0", "E' > 0 [Pa]"});
+  if (!(e_prime > 0) || !std::isfinite(e_prime))
+    bad.Add({"", 0, "e_prime_pa", internal::FormatReal(e_prime), "must be finite and > 0",
+             "E' > 0 [Pa], 2/E' = (1-nu1^2)/E1 + (1-nu2^2)/E2"});
+  // Effects that would do nothing: refused rather than silently ignored.
+  if (eff.finite_peclet && !eff.thermal)
+    bad.Add({"", 0, "FilmEffects::finite_peclet", "true",
+             "sets the surface temperatures of a thermal film; thermal is off",
+             "thermal = true, or finite_peclet = false"});
+  if (eff.roughness && !s1_ && !s2_)
+    bad.Add({"", 0, "FilmEffects::roughness", "true", "both surfaces are null (smooth)",
+             "a SurfaceShape for surface1 or surface2, or roughness = false"});
   bad.ThrowIfAny();
   const int n = grid.size();
   x2_.resize(n);

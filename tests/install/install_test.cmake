@@ -34,6 +34,12 @@ if(NOT lubricant)
   message(FATAL_ERROR "no share/tehl/lubricants/sae40.toml under ${prefix}")
 endif()
 run("installed tehl" ${prefix}/bin/tehl lubricant ${lubricant} --p 0:1e9:3 --T 313.15)
+# The documents the installed headers cite.
+foreach(doc library.md theory.md reference/DESIGN.md reference/VALIDATION.md)
+  if(NOT EXISTS ${prefix}/share/doc/tehl/${doc})
+    message(FATAL_ERROR "no share/doc/tehl/${doc} under ${prefix}")
+  endif()
+endforeach()
 
 # A lubricant by name is found in the installed share/tehl/lubricants, not in the source tree
 # the program was built from, also after the prefix has been moved.

@@ -167,6 +167,42 @@ TEST(HardCasesVerification, AStateOfAnotherGridOrNoneIsReportedNotRead) {
   EXPECT_TRUE(ms.solver.Step(c, 1e-6, &own).usable());
 }
 
+// Settings that would be silently ignored or crash later are refused when the solver is
+// made: a coarse grid below 5 nodes, an enum value outside its type, finite_peclet without
+// the thermal film, roughness with both surfaces smooth, a non-finite E'.
+TEST(HardCasesVerification, SettingsThatWouldBeIgnoredAreRefusedAtConstruction) {
+  const MoesPoint mp{20, 10};
+  const UniformGrid grid = mp.Grid(129);
+  const Lubricant oil = testing::ReferenceOil(mp.eta0_pa_s, mp.z);
+  const auto make = [&](const FilmEffects& e, const LineContactSolver::Options& o, double e_prime) {
+    LineContactSolver s(grid, e_prime, oil, e, o);
+  };
+  const FilmEffects plain;
+  LineContactSolver::Options coarse;
+  coarse.coarse_grid_nodes = 0;
+  EXPECT_THROW(make(plain, coarse, mp.e_prime_pa), InputError);
+  LineContactSolver::Options solver;
+  solver.linear_solver = static_cast<LinearSolverKind>(42);
+  EXPECT_THROW(make(plain, solver, mp.e_prime_pa), InputError);
+  LineContactSolver::Options scheme;
+  scheme.time_scheme = static_cast<TimeScheme>(7);
+  EXPECT_THROW(make(plain, scheme, mp.e_prime_pa), InputError);
+  FilmEffects peclet;
+  peclet.finite_peclet = true;
+  EXPECT_THROW(make(peclet, {}, mp.e_prime_pa), InputError);
+  FilmEffects rough;
+  rough.roughness = true;
+  EXPECT_THROW(make(rough, {}, mp.e_prime_pa), InputError);
+  EXPECT_THROW(make(plain, {}, std::numeric_limits<double>::infinity()), InputError);
+  EXPECT_NO_THROW(make(plain, {}, mp.e_prime_pa));
+  try {
+    make(plain, coarse, mp.e_prime_pa);
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("coarse_grid_nodes = 0 violates >= 5"), std::string::npos)
+        << e.what();
+  }
+}
+
 // The lubricant must outlive the solver: a temporary one is refused at compile time.
 static_assert(!std::is_constructible_v<LineContactSolver,
                                        const UniformGrid&,
