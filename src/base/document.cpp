@@ -183,6 +183,9 @@ class DocumentReader {
         rule += " (did you give degrees Celsius?)";
       if (k.unit == "Pa" && k.min == kMinModulusPa && x > 0 && x < kMinModulusPa)
         rule += " (did you give GPa or MPa? steel is 206e9 Pa)";
+      // A 0 for "none" where leaving the key out says it (radius_2_m: absent = a flat plane).
+      if (const size_t a = k.meaning.find("absent = "); x == 0 && a != std::string::npos)
+        rule += " (" + k.meaning.substr(a) + ": leave the key out)";
       if (!std::isfinite(x)) rule = "must be a finite number";
       Add(line, full, shown, rule, AllowedText(k));
     };

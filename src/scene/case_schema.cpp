@@ -121,7 +121,7 @@ SectionSpec SurfaceSection(const std::string& name, const std::string& what) {
       false,
       {
           Text("roughness", "\"smooth\"", "surface form", {"smooth", "sinusoidal", "profile"}),
-          Real("amplitude_m", "m", "0.0", "amplitude of sinusoidal waviness", 0.0),
+          Real("amplitude_m", "m", "0.0", "amplitude of sinusoidal waviness", 0.0, 1e-4),
           Positive("wavelength_m", "m", "", "wavelength of sinusoidal waviness"),
           Real("phase_rad", "rad", "0.0", "phase of the waviness at t = 0", -100.0, 100.0),
           Text("profile_file", "\"\"", "two-column file (x [m], height [m]) of a measured profile"),

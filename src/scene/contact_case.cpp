@@ -1,6 +1,7 @@
 #include "scene/contact_case.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "scene/automatic_grid.hpp"
@@ -126,6 +127,30 @@ ContactGridPlan PlanContactGrid(const ContactInputs& in, const FilmCase& film) {
     choice.Add(r, um, w);
   }
   return {choice.Grid(units), choice.Rule(units), choice.InletNote(units)};
+}
+
+void CheckContactRoughSteps(Document& doc,
+                            const ContactInputs& in,
+                            const FilmCase& film,
+                            double dx_m) {
+  if (!film.effects.roughness || in.steps <= 0 || in.t.size() < 2 || !(dx_m > 0)) return;
+  // The distance the entrainment moves over the tables (um linear between rows).
+  double travel = 0;
+  for (size_t i = 1; i < in.t.size(); ++i) {
+    const auto um = [&](size_t k) {
+      return 0.5 *
+             std::abs(in.u1[std::min(k, in.u1.size() - 1)] + in.u2[std::min(k, in.u2.size() - 1)]);
+    };
+    travel += 0.5 * (um(i - 1) + um(i)) * (in.t[i] - in.t[i - 1]);
+  }
+  const long long need = static_cast<long long>(std::ceil(travel / dx_m - 1e-9));
+  if (in.steps >= need) return;
+  doc.Problem("contact", "steps",
+              "with moving roughness a step may move the surfaces by one grid cell at most (dt "
+              "um <= dx): the tables move them " +
+                  FormatShort(travel) + " m, " + FormatShort(travel / dx_m) +
+                  " cells of dx = " + FormatShort(dx_m) + " m",
+              "steps >= " + std::to_string(need) + " on this grid, or fewer grid_points");
 }
 
 }  // namespace tehl::internal

@@ -37,4 +37,12 @@ struct ContactGridPlan {
 };
 ContactGridPlan PlanContactGrid(const ContactInputs& in, const FilmCase& film);
 
+// Moving roughness needs time steps that move the surfaces by at most one grid cell, dt um
+// <= dx, as a mesh cycle's (mesh_cycle_plan.cpp): a transient rough case with fewer `steps`
+// is reported at [contact] steps with the count it needs.
+void CheckContactRoughSteps(Document& doc,
+                            const ContactInputs& in,
+                            const FilmCase& film,
+                            double dx_m);
+
 }  // namespace tehl::internal

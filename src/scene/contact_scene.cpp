@@ -63,6 +63,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   const internal::ContactGridPlan plan = internal::PlanContactGrid(in, film);
   const UniformGrid& grid = plan.grid;
   internal::CheckRoughnessResolution(doc, film, grid.dx_m());
+  internal::CheckContactRoughSteps(doc, in, film, grid.dx_m());
   doc.ThrowIfProblems();
   if (!ro.quiet && film.grid_points == 0 && grid.size() > internal::kAutomaticGridMinNodes)
     std::fprintf(stderr, "grid %d nodes (%s)\n", grid.size(), plan.rule.c_str());
