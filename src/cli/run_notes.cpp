@@ -236,9 +236,25 @@ void PrintIsoviscousInletNote(const InletTruncation& t,
       100 * -x0_m / t.isoviscous_inlet_m, 1e3 * t.isoviscous_inlet_m, advice);
 }
 
+// A nearly rigid film thick against R: its flooded inlet would reach beyond R/2, where the
+// model's parabolic gap x^2/(2R) ends; the grid stops there (IsoviscousInletLength).
+void PrintThickFilmNote(const InletTruncation& t, double x0_m, const std::string& where) {
+  std::printf(
+      "note: %s is thick against its radius: a flooded rigid film builds its pressure over "
+      "tens of sqrt(2 R h), beyond R/2 where the gap of the model (the parabola x^2/2R) ends, "
+      "and the grid's inlet at x = %.3g mm (R/2 at most) makes it about %.2g %% thinner than "
+      "Martin's film with an unbounded inlet (the exact truncated rigid solution); a real "
+      "film there depends on where the oil meets the gap\n",
+      where.c_str(), 1e3 * x0_m, 100 * t.rigid_film_deficit);
+}
+
 void NoteContactInlet(const InletTruncation& t, double x_start_b, const GridSpan& g) {
   if (!t.estimated && t.short_isoviscous_inlet) {
     PrintIsoviscousInletNote(t, x_start_b, g, "the film");
+    return;
+  }
+  if (!t.estimated && t.rigid_film_deficit > kInletNoteDeficit) {
+    PrintThickFilmNote(t, g.x0_m, "the film");
     return;
   }
   if (!t.estimated || t.film_deficit <= kInletNoteDeficit) return;
@@ -275,6 +291,18 @@ void NoteCycleInlet(const MeshCycleResult& r) {
                   UsableSteps(r), r.steps[shortest].s_m * 1e3);
     PrintIsoviscousInletNote(inlet[shortest], r.x_start_b,
                              {r.x_m.front(), r.x_m.back(), static_cast<int>(r.x_m.size())}, where);
+  }
+  size_t thick = inlet.size();
+  for (size_t k = 0; k < r.steps.size() && k < inlet.size(); ++k)
+    if (Usable(r, k) && !inlet[k].estimated && r.steps[k].load_n_per_m >= 0.1 * w_max &&
+        inlet[k].rigid_film_deficit > kInletNoteDeficit &&
+        (thick == inlet.size() || inlet[k].rigid_film_deficit > inlet[thick].rigid_film_deficit))
+      thick = k;
+  if (thick < inlet.size() && short_count == 0 && !r.x_m.empty()) {
+    char where[96];
+    std::snprintf(where, sizeof where, "the film at s = %.4g mm (the worst)",
+                  r.steps[thick].s_m * 1e3);
+    PrintThickFilmNote(inlet[thick], r.x_m.front(), where);
   }
   size_t worst = inlet.size();
   for (size_t k = 0; k < r.steps.size() && k < inlet.size(); ++k)

@@ -70,6 +70,14 @@ InletTruncation EstimateInletTruncation(const Eigen::VectorXd& p_pa,
     // Martin's load at l_iso is within 0.1 % of its limit and the deficit of a shorter inlet
     // grows about as (l_iso / |x0|)^2: only an inlet shorter than half of it is noted.
     out.short_isoviscous_inlet = -x0 < kShortIsoviscousInlet * out.isoviscous_inlet_m;
+    const double w = in.load_n_per_m;
+    if (w > 0) {
+      const double h_martin = 4.896 * eta * um * r / w;
+      const double l = std::sqrt(2.0 * r * h_martin);
+      const bool rigid = b <= 0 || h_martin * r >= b * b;
+      if (rigid && kIsoviscousInletLengths * l > kIsoviscousInletMaxRadii * r)
+        out.rigid_film_deficit = 1.0 - RigidInletFilmRatio(x0 / l);
+    }
     return out;
   }
   // h* from the flux at x0 (p = 0 there, so eta and rho are the inlet's): q / (rho um) =
@@ -106,6 +114,46 @@ InletTruncation PredictInletTruncation(const InletTruncationInputs& in, double c
   out.missing_pressure_pa = p_in;
   out.film_deficit = -std::expm1(-kGrubinExponent * in.pressure_viscosity_per_pa * p_in);
   return out;
+}
+
+double RigidInletFilmRatio(double x0_over_l) {
+  if (!(x0_over_l < 0)) return 0.0;
+  // Martin's film in h0 and l = sqrt(2 R h0): H = 1 + X^2, dP/dX = (H - H*)/H^3 from P(X0) = 0
+  // to the Reynolds exit P = P' = 0 at Xc = sqrt(H* - 1). With the antiderivatives
+  //   F2 = X / (2 H) + atan(X) / 2,  F3 = X / (4 H^2) + 3 X / (8 H) + 3 atan(X) / 8
+  // of 1/H^2 and 1/H^3, P(Xc) = 0 fixes H*, and by parts the load is
+  //   W = -1/(2 H0) + H*/(4 H0^2) + 1/(4 H*),  H0 = 1 + X0^2,
+  // 1/(4 H*) for an unbounded inlet (24 W = 4.896, Martin's constant). At a given load h0
+  // scales with W.
+  const auto f2 = [](double x) { return x / (2 * (1 + x * x)) + 0.5 * std::atan(x); };
+  const auto f3 = [](double x) {
+    const double h = 1 + x * x;
+    return x / (4 * h * h) + 3 * x / (8 * h) + 0.375 * std::atan(x);
+  };
+  const auto exit_pressure = [&](double x0, double hs) {
+    const double xc = std::sqrt(hs - 1);
+    return f2(xc) - f2(x0) - hs * (f3(xc) - f3(x0));
+  };
+  const auto load = [&](double x0) {
+    double lo = 1.0 + 1e-12, hi = 2.0;  // P(Xc) > 0 at lo, < 0 at hi
+    for (int k = 0; k < 200 && hi - lo > 1e-15; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (exit_pressure(x0, mid) > 0 ? lo : hi) = mid;
+    }
+    const double hs = 0.5 * (lo + hi), h0 = 1 + x0 * x0;
+    return -1 / (2 * h0) + hs / (4 * h0 * h0) + 1 / (4 * hs);
+  };
+  // The inlet is fixed in x, and x0 / sqrt(2 R h0) moves with the film it thins: in units of
+  // Martin's length l_M the film ratio r solves r = W(X0 / sqrt(r)) / W(-inf) (a contraction:
+  // W changes slowly with X0).
+  const double unbounded = load(-1e8);
+  double ratio = load(x0_over_l) / unbounded;
+  for (int k = 0; k < 50; ++k) {
+    const double next = load(x0_over_l / std::sqrt(ratio)) / unbounded;
+    if (std::abs(next - ratio) < 1e-13) return next;
+    ratio = next;
+  }
+  return ratio;
 }
 
 }  // namespace tehl

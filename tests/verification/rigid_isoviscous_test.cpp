@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "support/test_lubricants.hpp"
+#include "tehl/ehl/inlet_truncation.hpp"
 #include "tehl/ehl/line_contact_solver.hpp"
 
 namespace tehl {
@@ -76,6 +77,24 @@ TEST(RigidIsoviscousVerification, LoadBalanceAndMassFlowHold) {
     qmax = std::max(qmax, run.flow[i]);
   }
   EXPECT_LT((qmax - qmin) / qmax, 1e-3);
+}
+
+// The same film with its inlet cut at X0 = -4.7 and -3 (an inlet at R/2 of a film thick against
+// R): h0 at the same load is Martin's times RigidInletFilmRatio(X0), the exact solution of the
+// truncated problem (inlet_truncation.hpp), to the grid's accuracy.
+TEST(RigidIsoviscousVerification, ATruncatedInletThinsTheFilmAsTheClosedFormSays) {
+  const MartinCase mc;
+  const Lubricant oil = testing::IsoviscousOil(mc.eta0);
+  FilmEffects eff;
+  eff.elastic = eff.piezoviscous = eff.compressible = eff.transient = false;
+  for (double x0 : {-4.7, -3.0}) {
+    const UniformGrid grid(x0 * mc.scale(), 2.0 * mc.scale(), 4001);
+    LineContactSolver solver(grid, 226.4e9, oil, eff, {});
+    FilmState s;
+    const ContactConditions c{mc.radius, mc.um, mc.um, mc.load(), testing::kReferenceT0};
+    ASSERT_TRUE(solver.SolveSteady(c, &s).usable()) << x0;
+    EXPECT_NEAR(s.h0_m / mc.h0, RigidInletFilmRatio(x0), 2e-3) << x0;
+  }
 }
 
 }  // namespace

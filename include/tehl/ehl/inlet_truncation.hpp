@@ -56,6 +56,10 @@ struct InletTruncation {
   double isoviscous_inlet_m = 0;   // l_iso (above); 0 when unknown [m]
   bool short_isoviscous_inlet = false;  // alpha p_max < kGrubinMinAlphaP and -x0 below
                                         //   kShortIsoviscousInlet l_iso
+  // A nearly rigid film (h_M R / b^2 >= 1) whose flooded inlet would reach beyond the R/2 cap
+  // of l_iso: 1 - RigidInletFilmRatio(x0 / sqrt(2 R h_M)), what the inlet at x0 costs it
+  // against Martin's unbounded one; 0 otherwise [-].
+  double rigid_film_deficit = 0;
   // The inlet x0' (same units as x0) at which the deficit would be `target`: p_in ~ |x0|^-3.
   double InletFor(double x0, double target) const;
 };
@@ -69,6 +73,12 @@ InletTruncation EstimateInletTruncation(const Eigen::VectorXd& p_pa,
 // at `central_film_m` over the Hertz zone, h* = h_c, the dry Hertz separation upstream, and
 // alpha p_H in place of alpha p_max. Needs b > 0 and w > 0; dx_m is not used.
 InletTruncation PredictInletTruncation(const InletTruncationInputs& in, double central_film_m);
+
+// Martin's rigid isoviscous film with its inlet at x0 = x0_over_l l_M (< 0), l_M =
+// sqrt(2 R h_M) with Martin's film h_M = 4.896 eta0 um R / w: its thickness at that load over
+// h_M (the exact solution of the truncated problem, closed form up to two roots) [-]. 0.907
+// at x0 = -4.7 l_M, 0.9997 at -40 l_M.
+double RigidInletFilmRatio(double x0_over_l);
 
 // Grubin's exponent of the film on alpha eta0 um (H ~ (G U)^(8/11)) [-].
 constexpr double kGrubinExponent = 8.0 / 11.0;

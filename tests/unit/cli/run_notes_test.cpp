@@ -339,6 +339,27 @@ TEST(RunNotes, AFilmHotterThan200CIsNoted) {
 // inlet reaches the isoviscous inlet length l_iso = R/2, tests/unit/scene/
 // automatic_grid_test.cpp) with x_start_b = -1, a fifth of that, gets the short-inlet note and
 // the x_start_b (-4.5) that reaches it; the default inlet gets none.
+// A load typed in kN/m as N/m: 100 N/m on the R = 10 mm discs at 1 m/s, Martin's film 55.8 um
+// (VALIDATION.md section 2), whose flooded inlet would reach tens of mm; the grid stops at R/2
+// and the film comes out 9 % thinner than Martin's, as the truncated rigid solution says
+// (RigidInletFilmRatio at X0 = -4.73: 0.909). The run says so.
+TEST(RunNotes, AFilmThickAgainstItsRadiusIsNoted) {
+  const std::string path = UniqueTempPath("thick.toml");
+  std::ofstream(path) << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nspeed_1_m_s = 1.0\n"
+                         "speed_2_m_s = 1.0\nload_n_per_m = 100.0\n[lubricant]\n"
+                         "name = \"sae40\"\n[effects]\ntransient = false\n[output]\n"
+                         "directory = \""
+                      << UniqueTempPath("out") << "\"\n";
+  const RunResult r = RunTehl("run -q '" + path + "'");
+  ASSERT_TRUE(r.exited);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(
+      r.out, m, std::regex(R"(note: the film is thick against its radius: .* about ([0-9.]+) %)")))
+      << r.out;
+  EXPECT_NEAR(std::stod(m[1]), 9.1, 0.3) << r.out;
+}
+
 TEST(RunNotes, AShortInletOfANearlyIsoviscousDiscIsNoted) {
   auto disc = [](const std::string& numerics) {
     const std::string path = UniqueTempPath("light.toml");

@@ -149,5 +149,45 @@ TEST(InletTruncation, ANearlyIsoviscousFilmIsFlaggedWhenItsInletIsShort) {
   EXPECT_EQ(IsoviscousInletLength(kR, b, kUm, kEta, 0.0), 0.0);
 }
 
+// Martin's film with a truncated inlet, against an independent trapezoidal quadrature of
+// dP/dX = (H - H*)/H^3 (2e5 intervals, H* by root finding; the unbounded load from X0 = -2000
+// on 4e6 intervals), with the fixed point r = W(X0 / sqrt(r)) / W(-inf) iterated on it (the
+// inlet fixed in units of Martin's l_M): 0.81348 at X0 = -3, 0.90772 at -4.7, 0.97669 at -10.
+TEST(InletTruncation, RigidInletFilmRatioMatchesAQuadratureOfMartinsProblem) {
+  EXPECT_NEAR(RigidInletFilmRatio(-3.0), 0.81348, 5e-4);
+  EXPECT_NEAR(RigidInletFilmRatio(-4.7), 0.90772, 5e-4);
+  EXPECT_NEAR(RigidInletFilmRatio(-10.0), 0.97669, 5e-4);
+  EXPECT_NEAR(RigidInletFilmRatio(-1e6), 1.0, 1e-9);
+  EXPECT_EQ(RigidInletFilmRatio(1.0), 0.0);
+}
+
+// A rigid-like film (Martin film thick against b^2/R) whose flooded inlet would pass R/2 gets
+// the deficit of its inlet against Martin's: the disc of 100 N/m at 1 m/s (R = 10 mm, SAE 40:
+// h_M = 55.8 um, sqrt(2 R h_M) = 1.056 mm, 40 of them far beyond R/2 = 5 mm) on an inlet at R/2.
+TEST(InletTruncation, AThickRigidFilmCappedAtHalfTheRadiusGetsItsDeficit) {
+  const double eta = 0.1140574, um = 1.0, r = 0.01, w = 100.0;
+  const double b = std::sqrt(8 * w * r / (M_PI * 226.4e9));
+  Film f(60e-6, 0.0, 1e3);
+  InletTruncationInputs in;
+  in.x_start_m = -0.5 * r;
+  in.dx_m = kDx;
+  in.reduced_radius_m = r;
+  in.half_width_m = b;
+  in.um_m_s = um;
+  in.inlet_viscosity_pa_s = eta;
+  in.pressure_viscosity_per_pa = kAlpha;
+  in.load_n_per_m = w;
+  const InletTruncation t = EstimateInletTruncation(f.p, f.h, in);
+  EXPECT_FALSE(t.estimated);
+  const double l = std::sqrt(2 * r * 4.896 * eta * um * r / w);
+  EXPECT_NEAR(t.rigid_film_deficit, 1 - RigidInletFilmRatio(-0.5 * r / l), 1e-12);
+  EXPECT_GT(t.rigid_film_deficit, 0.09);  // X0 = -4.7
+  // A moderate load, whose inlet need not pass R/2: none.
+  in.load_n_per_m = 1e5;
+  in.half_width_m = std::sqrt(8 * 1e5 * r / (M_PI * 226.4e9));
+  in.x_start_m = -4.5 * in.half_width_m;
+  EXPECT_EQ(EstimateInletTruncation(f.p, f.h, in).rigid_film_deficit, 0.0);
+}
+
 }  // namespace
 }  // namespace tehl
