@@ -37,6 +37,16 @@ double MissingPressure(
   return sum / (3.0 * kIntervals);
 }
 
+// `out` with the missing pressure p_in and Grubin's deficit 1 - exp(-(8/11) alpha p_in); as
+// it was (no estimate) when p_in is not finite.
+InletTruncation WithGrubinDeficit(InletTruncation out, double p_in, double alpha) {
+  if (!std::isfinite(p_in)) return out;
+  out.estimated = true;
+  out.missing_pressure_pa = p_in;
+  out.film_deficit = -std::expm1(-kGrubinExponent * alpha * p_in);
+  return out;
+}
+
 }  // namespace
 
 double IsoviscousInletLength(double r, double b, double um, double eta, double w) {
@@ -85,11 +95,7 @@ InletTruncation EstimateInletTruncation(const Eigen::VectorXd& p_pa,
   const double dpdx = (-3.0 * p_pa[0] + 4.0 * p_pa[1] - p_pa[2]) / (2.0 * in.dx_m);
   const double h_star = h0 - h0 * h0 * h0 / (12.0 * eta * um) * dpdx;
   const double p_in = MissingPressure(x0, b, r, eta, um, h0, h_star);
-  if (!std::isfinite(p_in)) return out;
-  out.estimated = true;
-  out.missing_pressure_pa = p_in;
-  out.film_deficit = -std::expm1(-kGrubinExponent * in.pressure_viscosity_per_pa * p_in);
-  return out;
+  return WithGrubinDeficit(out, p_in, in.pressure_viscosity_per_pa);
 }
 
 InletTruncation PredictInletTruncation(const InletTruncationInputs& in, double central_film_m) {
@@ -109,11 +115,7 @@ InletTruncation PredictInletTruncation(const InletTruncationInputs& in, double c
   // outside it; h* (where dp/dx = 0) is taken as h_c.
   const double h0 = central_film_m + HertzSeparation(x0, b, r);
   const double p_in = MissingPressure(x0, b, r, eta, um, h0, central_film_m);
-  if (!std::isfinite(p_in)) return out;
-  out.estimated = true;
-  out.missing_pressure_pa = p_in;
-  out.film_deficit = -std::expm1(-kGrubinExponent * in.pressure_viscosity_per_pa * p_in);
-  return out;
+  return WithGrubinDeficit(out, p_in, in.pressure_viscosity_per_pa);
 }
 
 double RigidInletFilmRatio(double x0_over_l) {

@@ -25,6 +25,20 @@ struct Film {
 // Cells per half-width: 256 cells over 6 b.
 constexpr double kCellsPerB = 256.0 / 6.0;
 
+// The disc's inlet inputs with the grid starting at x0 (dx left 0).
+InletTruncationInputs DiscInlet(const ThermalDisc& d, double x0_m) {
+  const ViscosityValue v = Sae40().viscosity().Evaluate(0.0, d.Conditions(Sae40()).temperature_k);
+  InletTruncationInputs in;
+  in.x_start_m = x0_m;
+  in.reduced_radius_m = d.radius_m;
+  in.half_width_m = d.half_width_m();
+  in.um_m_s = d.um_m_s;
+  in.inlet_viscosity_pa_s = v.eta_pa_s;
+  in.pressure_viscosity_per_pa = v.deta_dp / v.eta_pa_s;
+  in.load_n_per_m = d.load_n_per_m();
+  return in;
+}
+
 Film Solve(const ThermalDisc& d, double x_start_b) {
   const double b = d.half_width_m();
   const int cells_in = static_cast<int>(std::lround(-x_start_b * kCellsPerB));
@@ -38,15 +52,8 @@ Film Solve(const ThermalDisc& d, double x_start_b) {
   FilmState s;
   const LineContactSolver::Summary sum = solver.SolveSteady(c, &s);
   EXPECT_TRUE(sum.usable()) << sum.BriefReport();
-  const ViscosityValue v = Sae40().viscosity().Evaluate(0.0, c.temperature_k);
-  InletTruncationInputs in;
-  in.x_start_m = grid.x_start_m();
+  InletTruncationInputs in = DiscInlet(d, grid.x_start_m());
   in.dx_m = grid.dx_m();
-  in.reduced_radius_m = d.radius_m;
-  in.half_width_m = b;
-  in.um_m_s = d.um_m_s;
-  in.inlet_viscosity_pa_s = v.eta_pa_s;
-  in.pressure_viscosity_per_pa = v.deta_dp / v.eta_pa_s;
   return {s.CentralFilm(grid), EstimateInletTruncation(s.p_pa, s.h_m, in)};
 }
 
@@ -98,19 +105,10 @@ TEST(InletTruncationVerification, PredictionBeforeSolvingFollowsTheMeasuredDefic
     const Film ref = Solve(d, -24.0);
     const Film f = Solve(d, -4.5);
     const double measured = 1.0 - f.hc_m / ref.hc_m;
-    const ContactConditions c = d.Conditions(Sae40());
-    const ViscosityValue v = Sae40().viscosity().Evaluate(0.0, c.temperature_k);
-    const double alpha = v.deta_dp / v.eta_pa_s;
-    InletTruncationInputs in;
-    in.x_start_m = -4.5 * d.half_width_m();
-    in.reduced_radius_m = d.radius_m;
-    in.half_width_m = d.half_width_m();
-    in.um_m_s = d.um_m_s;
-    in.inlet_viscosity_pa_s = v.eta_pa_s;
-    in.pressure_viscosity_per_pa = alpha;
-    in.load_n_per_m = d.load_n_per_m();
-    const double hc = EstimatedCentralFilmM(v.eta_pa_s, alpha, d.um_m_s, d.load_n_per_m(),
-                                            d.radius_m, d.e_prime_pa, true);
+    const InletTruncationInputs in = DiscInlet(d, -4.5 * d.half_width_m());
+    const double hc =
+        EstimatedCentralFilmM(in.inlet_viscosity_pa_s, in.pressure_viscosity_per_pa, d.um_m_s,
+                              d.load_n_per_m(), d.radius_m, d.e_prime_pa, true);
     const InletTruncation p = PredictInletTruncation(in, hc);
     ASSERT_TRUE(p.estimated);
     std::printf("p_H %.1f GPa, um %.1f m/s: deficit predicted %.3f %%, measured %.3f %%\n",
