@@ -23,8 +23,11 @@ Command AddPlotCommand(CLI::App& app) {
     std::string output_dir;
   };
   auto args = std::make_shared<Args>();
-  CLI::App* sub = app.add_subcommand("plot", "PNG figures of a mesh-cycle result (.h5)");
-  sub->add_option("RESULT", args->result, "Result file written by `tehl run` (.h5)")->required();
+  CLI::App* sub =
+      app.add_subcommand("plot", "PNG figures of a mesh-cycle result or a study index (.h5)");
+  sub->add_option("RESULT", args->result,
+                  "Result file written by `tehl run` (NAME.h5) or `tehl sweep` (index.h5)")
+      ->required();
   sub->add_option("-o,--output-dir", args->output_dir,
                   "Folder for the PNG files (default: beside the result)");
   return {sub, [args]() {
