@@ -103,6 +103,9 @@ int RunGear(const RunArgs& a) {
   NoteThinFilms(r.steps, [](size_t k, const MeshCycleStep& s) {
     return Where("step %zu (s = %.4g mm)", k, s.s_m * 1e3);
   });
+  NoteCutOutlets(r.steps, [](size_t k, const MeshCycleStep& s) {
+    return Where("step %zu (s = %.4g mm)", k, s.s_m * 1e3);
+  });
   if (r.thermal)
     NoteHotFilms(r.steps, !r.non_newtonian, [](size_t k, const MeshCycleStep& s) {
       return Where("step %zu (s = %.4g mm)", k, s.s_m * 1e3);
@@ -161,6 +164,9 @@ int RunContact(const RunArgs& a) {
     return Where("step %zu (t = %.4g s)", k, s.time_s);
   });
   NoteThinFilms(r.steps, [](size_t k, const ContactStepRecord& s) {
+    return Where("step %zu (t = %.4g s)", k, s.time_s);
+  });
+  NoteCutOutlets(r.steps, [](size_t k, const ContactStepRecord& s) {
     return Where("step %zu (t = %.4g s)", k, s.time_s);
   });
   if (r.thermal)

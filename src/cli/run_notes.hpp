@@ -174,6 +174,22 @@ void NoteThinFilms(const std::vector<Step>& steps, Where where) {
       where(thinnest, steps[thinnest]).c_str(), mu);
 }
 
+// The converged films whose pressure had not cavitated before the grid's last inner node
+// (Summary::outlet_cut): the grid ends inside them and cuts them off.
+template <typename Step, typename Where>
+void NoteCutOutlets(const std::vector<Step>& steps, Where where) {
+  size_t count = 0, first = 0;
+  for (size_t k = 0; k < steps.size(); ++k)
+    if (steps[k].summary.usable() && steps[k].summary.outlet_cut && count++ == 0) first = k;
+  if (count == 0) return;
+  std::printf(
+      "note: in %zu of %zu films (the first at %s) the pressure is still positive next to the "
+      "grid's outlet end: the grid cuts the film off before its Reynolds exit, so it is the "
+      "film of a shorter contact; [numerics] x_end_b (or leaving grid_points and x_end_b to "
+      "the automatic grid) reaches it\n",
+      count, UsableCount(steps), where(first, steps[first]).c_str());
+}
+
 // Above about 200 C mineral oils oxidize and their light ends evaporate (the flash points of
 // gear and engine oils lie near 200-250 C), and the viscosity-temperature data the lubricant
 // laws are fitted to span about 40-100 C (the reference temperatures of ISO 3448 and ASTM

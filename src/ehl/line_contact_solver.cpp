@@ -162,6 +162,9 @@ std::string LineContactSolver::Summary::BriefReport() const {
   o << ", residual " << residual << ", load error " << load_error << ", " << linear_solver << ", "
     << wall_time_s << " s";
   if (!usable()) o << ": " << message;
+  if (usable() && outlet_cut)
+    o << "; the pressure is still positive next to the grid's outlet end: the grid cuts the "
+         "film off (size it for a larger half-width)";
   return o.str();
 }
 // ---------------------------------------------------------------------------------------
@@ -363,6 +366,13 @@ std::string StateProblem(const UniformGrid& grid, const FilmState* s, bool empty
   return "";
 }
 
+// Summary::outlet_cut: a converged film still under pressure at the last inner node.
+bool OutletCut(const LineContactSolver::Summary& sum, const FilmState& s) {
+  const Eigen::Index n = s.p_pa.size();
+  // Above round-off of the film's own pressure scale: a cavitated node holds exactly 0.
+  return sum.usable() && n >= 3 && s.p_pa[n - 2] > 1e-9 * s.p_pa.maxCoeff();
+}
+
 LineContactSolver::Summary InvalidState(std::string why) {
   LineContactSolver::Summary sum;
   sum.termination = LineContactSolver::Termination::kInvalidInput;
@@ -379,6 +389,7 @@ LineContactSolver::Summary LineContactSolver::SolveSteady(const ContactCondition
   if (state->solved_for) impl_->PredictHertzSimilar(*state->solved_for, c, state);
   Summary sum = impl_->SolveCoupled(c, internal::TimeDerivative{}, nullptr, 0.0, state);
   if (sum.usable()) state->solved_for = c;
+  sum.outlet_cut = OutletCut(sum, *state);
   return sum;
 }
 void LineContactSolver::BeginTransient(const ContactConditions& c, const FilmState& initial) {
@@ -396,6 +407,7 @@ LineContactSolver::Summary LineContactSolver::Step(const ContactConditions& c,
     return InvalidState(std::move(why));
   Summary sum = impl_->Step(c, dt, state, c_start);
   if (sum.usable()) state->solved_for = c;
+  sum.outlet_cut = OutletCut(sum, *state);
   return sum;
 }
 double LineContactSolver::ResidualNorm(const ContactConditions& c, const FilmState& s) const {

@@ -203,6 +203,26 @@ TEST(HardCasesVerification, SettingsThatWouldBeIgnoredAreRefusedAtConstruction) 
   }
 }
 
+// A grid sized for 1/2.25 of the load (2/3 of the Hertz half-width b) ends inside the film of
+// the full load: -4.5 b .. 1.5 b of the smaller contact reaches 1.0 b of the larger, short of
+// its Reynolds exit past b. The converged film says so (Summary::outlet_cut); on its own grid
+// it does not.
+TEST(HardCasesVerification, AGridThatEndsInsideTheFilmIsReported) {
+  const MoesPoint mp{20, 10};
+  MoesSolver ms(mp, 257);
+  ContactConditions c = mp.Conditions();
+  FilmState own;
+  const LineContactSolver::Summary fits = ms.solver.SolveSteady(c, &own);
+  ASSERT_TRUE(fits.usable()) << fits.BriefReport();
+  EXPECT_FALSE(fits.outlet_cut);
+  c.load_n_per_m *= 2.25;
+  FilmState cut;
+  const LineContactSolver::Summary s = ms.solver.SolveSteady(c, &cut);
+  ASSERT_TRUE(s.usable()) << s.BriefReport();
+  EXPECT_TRUE(s.outlet_cut);
+  EXPECT_NE(s.BriefReport().find("cuts the film off"), std::string::npos) << s.BriefReport();
+}
+
 // The lubricant must outlive the solver: a temporary one is refused at compile time.
 static_assert(!std::is_constructible_v<LineContactSolver,
                                        const UniformGrid&,

@@ -200,6 +200,11 @@ class LineContactSolver {
     int coupling_newton_iterations = 0;  // Newton steps on the coupling (0 = not needed) [-]
     int temperature_backoffs = 0;  // halvings of coupling temperature steps whose pressure
                                    // solve failed (docs/thermal.md) [-]
+    // A converged film whose pressure is still positive at the grid's last inner node: its
+    // outlet (the Reynolds exit) lies beyond the grid, which ends inside the film and cuts
+    // it (a grid sized for a smaller load or a lighter, thicker film). The film is a solution
+    // of the cut problem, not of the contact: size the grid for the largest half-width.
+    bool outlet_cut = false;
     bool usable() const { return termination == Termination::kConverged; }
     std::string BriefReport() const;
   };
