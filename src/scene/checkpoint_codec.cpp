@@ -51,6 +51,7 @@ void PutStep(Out& o, const MeshCycleStep& k) {
     o.F(v);
   o.S(s.linear_solver);
   o.S(k.restart_reason);
+  o.I(s.outlet_cut ? 1 : 0);
 }
 
 MeshCycleStep GetStep(In& in) {
@@ -89,6 +90,7 @@ MeshCycleStep GetStep(In& in) {
     *v = in.F();
   s.linear_solver = in.S();
   k.restart_reason = in.S();
+  s.outlet_cut = in.I() != 0;
   return k;
 }
 

@@ -33,6 +33,7 @@ void AddStep(MeshCycleResult* r, int k) {
   s.zone = k < 5 ? "A-B" : "B-D";
   s.summary.iterations = k;
   s.summary.message = "step " + std::to_string(k);
+  s.summary.outlet_cut = k % 3 == 1;
   // The same length on every row (the journal test below compares bytes per row).
   s.restart_reason = std::string("restart ") + static_cast<char>('a' + k % 26);
   r->steps.push_back(s);
@@ -81,6 +82,7 @@ void ExpectSameRows(const MeshCycleResult& a, const MeshCycleResult& b) {
     EXPECT_EQ(a.steps[k].summary.iterations, b.steps[k].summary.iterations) << k;
     EXPECT_EQ(a.steps[k].summary.message, b.steps[k].summary.message) << k;
     EXPECT_EQ(a.steps[k].restart_reason, b.steps[k].restart_reason) << k;
+    EXPECT_EQ(a.steps[k].summary.outlet_cut, b.steps[k].summary.outlet_cut) << k;
   }
   EXPECT_EQ(a.p_pa, b.p_pa);
   EXPECT_EQ(a.h_m, b.h_m);
