@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/sweep_mpi.hpp"
+#include "scene/automatic_grid.hpp"
 #include "tehl/ehl/hertz_edge.hpp"
 #include "tehl/error.hpp"
 #include "tehl/scene/study.hpp"
@@ -78,7 +79,8 @@ int RunSweep(const SweepArgs& a) {
   if (mpi.rank() != 0) return kExitOk;
   const std::vector<SceneRow> gathered = SceneRowsFromText(all);
   const auto paths = WriteStudyIndex(study, gathered);
-  int ok = 0, not_converged = 0, failed = 0, resumed = 0, restarted = 0, unresolved_edge = 0;
+  int ok = 0, not_converged = 0, failed = 0, resumed = 0, restarted = 0, unresolved_edge = 0,
+      short_inlet = 0;
   double fewest_nodes = 0, most_nodes = 0;  // over the scenes whose result has a grid
   for (const auto& r : gathered) {
     if (r.grid_points > 0) {
@@ -88,6 +90,7 @@ int RunSweep(const SweepArgs& a) {
     ok += r.status == "ok";
     restarted += r.steady_restarts > 0;
     unresolved_edge += r.edge_cells_min >= 0 && r.edge_cells_min < kEdgeResolvedCells;
+    short_inlet += r.inlet_deficit_max > internal::kInletNoteDeficit;
     not_converged += r.status == "not_converged";
     failed += r.status.rfind("failed", 0) == 0;
     resumed += !r.computed;
@@ -105,6 +108,13 @@ int RunSweep(const SweepArgs& a) {
         "(index column edge_cells_min): their h_c is likely more than 1 %% too thin; more "
         "[numerics] grid_points resolve it (docs/results.md, \"The edge note\")\n",
         unresolved_edge, kEdgeResolvedCells);
+  if (short_inlet > 0)
+    std::printf(
+        "note: %d scene(s) have films that the inlet at x_start_b thins by more than %.1f %% "
+        "(index column inlet_deficit_max): leaving [numerics] grid_points out gives them the "
+        "automatic grid, whose inlet reaches far enough (docs/results.md, \"The inlet "
+        "note\")\n",
+        short_inlet, 100 * internal::kInletNoteDeficit);
   if (most_nodes > fewest_nodes)
     std::printf(
         "note: the scenes ran on grids of %.0f to %.0f nodes (index column grid_points; the "

@@ -114,6 +114,13 @@ double Mean(const std::vector<double>& v) {
 
 // The fewest cells across the Hertzian edge over the films that have one (-1 marks rigid
 // solids or no film: hertz_edge.hpp); -1 when none has.
+// The largest estimated inlet deficit; -1 (no estimate) stays -1.
+double LargestDeficit(const std::vector<double>& deficits) {
+  double largest = -1;
+  for (double d : deficits) largest = std::max(largest, d);
+  return largest;
+}
+
 double FewestEdgeCells(const std::vector<double>& cells) {
   double fewest = -1;
   for (double c : cells)
@@ -170,6 +177,8 @@ SceneRow GearRow(const std::string& path) {
     r.edge_cells_min = FewestEdgeCells(h5.Doubles("/cycle/edge_cells"));
   if (h5.Exists("/profiles/x"))
     r.grid_points = static_cast<double>(h5.Doubles("/profiles/x").size());
+  if (h5.Exists("/cycle/inlet_deficit"))
+    r.inlet_deficit_max = LargestDeficit(h5.Doubles("/cycle/inlet_deficit"));
   const bool ok = h5.StringAttribute("/", "converged") == "true";
   r.status = ok ? "ok" : "not_converged";
   if (!ok) {
@@ -211,8 +220,8 @@ SceneRow ContactRow(const std::string& path) {
                it = col("termination");
   const size_t itm = find("t_max_k"), imu = find("mu"), iwt = find("wall_time_s"),
                it1 = find("t1_max_k"), it2 = find("t2_max_k"), ifl = find("dT_flash_blok_k"),
-               irs = find("steady_restart"), ied = find("edge_cells");
-  std::vector<double> h_min, h_c, p_max, t_max, mu, surface, flash, edge;
+               irs = find("steady_restart"), ied = find("edge_cells"), iin = find("inlet_deficit");
+  std::vector<double> h_min, h_c, p_max, t_max, mu, surface, flash, edge, inlet;
   SceneRow r;
   r.status = "ok";
   while (std::getline(in, line)) {
@@ -230,6 +239,7 @@ SceneRow ContactRow(const std::string& path) {
     if (ifl != none) flash.push_back(std::stod(f[ifl]));
     if (irs != none) r.steady_restarts += std::stod(f[irs]);
     if (ied != none) edge.push_back(std::stod(f[ied]));
+    if (iin != none) inlet.push_back(std::stod(f[iin]));
     if (f[it] != "converged") {
       r.status = "not_converged";
       r.message = f[it];
@@ -246,6 +256,7 @@ SceneRow ContactRow(const std::string& path) {
   r.t_surface_max_k = Max(surface);
   r.flash_blok_max_k = Max(flash);
   r.edge_cells_min = FewestEdgeCells(edge);
+  r.inlet_deficit_max = LargestDeficit(inlet);
   r.grid_points = ProfileRows(path);
   return r;
 }

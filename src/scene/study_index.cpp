@@ -59,6 +59,10 @@ const std::vector<SummaryColumn>& SummaryColumns() {
        "nodes of the film grid: the case's [numerics] grid_points, or the automatic grid's "
        "(0: not in the result)",
        &SceneRow::grid_points},
+      {"inlet_deficit_max", "inlet_deficit_max", "-",
+       "largest estimated film deficit of the truncated inlet over the films; above 0.005 the "
+       "inlet thins them (-1: no estimate, or results of earlier versions)",
+       &SceneRow::inlet_deficit_max},
   };
   return cols;
 }

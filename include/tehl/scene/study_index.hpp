@@ -38,6 +38,9 @@ struct SceneRow {
                                   //   earlier version [-]
   double grid_points = 0;         // nodes of the film grid (docs/case_format.md; 0: not in the
                                   //   result) [-]
+  double inlet_deficit_max = -1;  // largest estimated film deficit of the truncated inlet
+                                  //   over the films (docs/results.md "The inlet note"); -1:
+                                  //   no estimate, or a result of an earlier version [-]
   int steps = 0;                  // rows of the cycle table [-]
 };
 
