@@ -32,6 +32,8 @@ HertzScales LineContactHertz(double load_n_per_m, double reduced_radius_m, doubl
 // Temperatures are absolute; anything below this is taken for degrees Celsius and refused,
 // in files and in the film solver's conditions [K].
 inline constexpr double kMinAbsoluteTemperatureK = 200.0;
+// ... and no lubricant law describes an oil above this [K].
+inline constexpr double kMaxTemperatureK = 1000.0;
 
 // Hertz line-contact theory, on which the film model builds, needs b << R. Cases whose b / R
 // exceeds this bound (p_H > E' / 20: a load or a modulus in the wrong unit) are refused.

@@ -191,7 +191,7 @@ KeySpec Reals(std::string name,
 KeySpec Temperature(std::string name, std::string def, std::string meaning) {
   // Absolute temperatures only: anything below 200 K is almost surely degrees Celsius.
   return Real(std::move(name), "K", std::move(def), std::move(meaning), kMinAbsoluteTemperatureK,
-              1000.0);
+              kMaxTemperatureK);
 }
 
 KeySpec Modulus(std::string name, std::string def, std::string meaning) {

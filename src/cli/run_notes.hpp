@@ -185,8 +185,8 @@ void NoteCutOutlets(const std::vector<Step>& steps, Where where) {
   std::printf(
       "note: in %zu of %zu films (the first at %s) the pressure is still positive next to the "
       "grid's outlet end: the grid cuts the film off before its Reynolds exit, so it is the "
-      "film of a shorter contact; [numerics] x_end_b (or leaving grid_points and x_end_b to "
-      "the automatic grid) reaches it\n",
+      "film of a shorter contact; a larger [numerics] x_end_b (the outlet end in half-widths "
+      "b of the largest contact) reaches it\n",
       count, UsableCount(steps), where(first, steps[first]).c_str());
 }
 

@@ -111,9 +111,9 @@ int RunSweep(const SweepArgs& a) {
   if (short_inlet > 0)
     std::printf(
         "note: %d scene(s) have films that the inlet at x_start_b thins by more than %.1f %% "
-        "(index column inlet_deficit_max): leaving [numerics] grid_points out gives them the "
-        "automatic grid, whose inlet reaches far enough (docs/results.md, \"The inlet "
-        "note\")\n",
+        "(index column inlet_deficit_max): a longer inlet ([numerics] x_start_b with "
+        "grid_points raised in proportion, or the automatic grid) removes it (docs/results.md, "
+        "\"The inlet note\")\n",
         short_inlet, 100 * internal::kInletNoteDeficit);
   if (most_nodes > fewest_nodes)
     std::printf(

@@ -265,9 +265,10 @@ bool LineContactSolver::Impl::ValidConditions(const ContactConditions& c, Summar
   if (!(c.um() > 0) || !std::isfinite(c.um()))
     bad += " entrainment speed um = " + FormatShort(c.um()) +
            " m/s, not finite and > 0 (the inlet is at x_start);";
-  if (!(c.temperature_k >= kMinAbsoluteTemperatureK) || !std::isfinite(c.temperature_k))
-    bad += " T = " + FormatShort(c.temperature_k) + " K, not a finite temperature of at least " +
-           FormatShort(kMinAbsoluteTemperatureK) + " K (degrees Celsius?);";
+  if (!(c.temperature_k >= kMinAbsoluteTemperatureK) || !(c.temperature_k <= kMaxTemperatureK))
+    bad += " T = " + FormatShort(c.temperature_k) + " K, not a temperature from " +
+           FormatShort(kMinAbsoluteTemperatureK) + " to " + FormatShort(kMaxTemperatureK) +
+           " K (below: degrees Celsius?);";
   if (bad.empty()) return true;
   sum->termination = Termination::kInvalidInput;
   sum->message = "invalid contact conditions:" + bad;

@@ -30,12 +30,17 @@ std::vector<fs::path> DataDirs(const std::string& sub, const char* env_var) {
   std::vector<fs::path> candidates;
   if (const char* env = env_var ? std::getenv(env_var) : nullptr; env && *env)
     candidates.emplace_back(env);
-  for (const fs::path& file : {LibraryFile(), ProgramFile()})
-    if (!file.empty()) candidates.push_back(file.parent_path() / ".." / "share" / "tehl" / sub);
-  if (sub == "lubricants") {
+  bool installed = false;  // an installed tehl uses its own data, not a build's source tree
+  for (const fs::path& file : {LibraryFile(), ProgramFile()}) {
+    if (file.empty()) continue;
+    candidates.push_back(file.parent_path() / ".." / "share" / "tehl" / sub);
+    std::error_code ec;
+    installed = installed || fs::is_directory(candidates.back(), ec);
+  }
+  if (!installed && sub == "lubricants") {
     candidates.emplace_back(TEHL_SOURCE_LUBRICANT_DIR);
     candidates.emplace_back(TEHL_INSTALL_LUBRICANT_DIR);
-  } else if (sub == "scripts") {
+  } else if (!installed && sub == "scripts") {
     candidates.emplace_back(TEHL_SOURCE_SCRIPT_DIR);
     candidates.emplace_back(TEHL_INSTALL_SCRIPT_DIR);
   }

@@ -11,8 +11,8 @@ namespace tehl::internal {
 
 // Existing folders for `sub` ("lubricants" or "scripts"), without repeats: first `env_var`
 // (when set), then share/tehl/<sub> relative to the library file and to the running program
-// (<dir>/../share/tehl/<sub>), then the folder of the source tree tehl was built from, then
-// the install prefix it was configured with.
+// (<dir>/../share/tehl/<sub>); only when neither exists (a build tree), the folder of the
+// source tree tehl was built from, then the install prefix it was configured with.
 std::vector<std::filesystem::path> DataDirs(const std::string& sub, const char* env_var);
 
 }  // namespace tehl::internal

@@ -69,7 +69,7 @@ void GridChoice::Add(double r, double um, double w, bool sizes_inlet) {
 }
 
 double GridChoice::WorstDeficit(double x0) const {
-  double worst = 0;
+  double worst = -1;
   for (const InletFilm& f : inlet_films_) {
     if (!(-x0 > f.b_m)) continue;
     const InletTruncation t = PredictInletTruncation(
@@ -110,12 +110,16 @@ std::string GridChoice::Rule(const GridUnits& given) const {
   const double deficit = WorstDeficit(x0);
   std::string inlet;
   if (units.inlet_m > given.inlet_m || units.outlet_m > given.outlet_m) {
+    char estimate[96] = "no Grubin estimate: nearly isoviscous films";
+    if (deficit >= 0)
+      std::snprintf(estimate, sizeof estimate, "inlet deficit at most %.2f %%, estimated",
+                    100 * deficit);
     std::snprintf(buf, sizeof buf,
                   "; for the films' inlets and outlets it spans x = %.3g ... %.3g mm instead of "
-                  "%.3g ... %.3g mm (inlet deficit at most %.2f %%, estimated)",
+                  "%.3g ... %.3g mm (%s)",
                   x0 * 1e3, film_.x_end_b * units.outlet_m * 1e3,
                   film_.x_start_b * given.inlet_m * 1e3, film_.x_end_b * given.outlet_m * 1e3,
-                  100 * deficit);
+                  estimate);
     inlet = buf;
   }
   if (!std::isfinite(edge_m_)) {
@@ -144,9 +148,9 @@ std::string GridChoice::InletNote(const GridUnits& given) const {
   char buf[400];
   std::snprintf(buf, sizeof buf,
                 "the inlet at x = %.3g mm thins the films by up to %.1f %% (Grubin's estimate "
-                "before solving); one at %.3g mm keeps it below %.1f %%: leave grid_points out "
-                "for the automatic grid, or set x_start_b = %.3g with grid_points = %d (the same "
-                "spacing)",
+                "before solving); one at %.3g mm keeps it below %.1f %%: x_start_b = %.3g with "
+                "grid_points = %d keeps the spacing (the automatic grid, grid_points left out, "
+                "reaches as far with fewer nodes, so a coarser spacing)",
                 x0 * 1e3, 100 * deficit, -inlet_need_m_ * 1e3, 100 * kInletTargetDeficit,
                 film_.x_start_b * inlet_need_m_ / -x0, Grid(given).NodesFromStart(-inlet_need_m_));
   return buf;

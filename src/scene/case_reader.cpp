@@ -14,7 +14,9 @@ std::string ResolveLubricantPath(const std::string& name, const std::string& cas
   if (name.empty()) return "";
   std::vector<fs::path> candidates;
   const fs::path as_given(name);
-  const fs::path case_dir = fs::path(case_path).parent_path();
+  // A case given by its bare file name lies in the working folder.
+  fs::path case_dir = fs::path(case_path).parent_path();
+  if (case_dir.empty() && !case_path.empty()) case_dir = ".";
   const std::string file = as_given.has_extension() ? name : name + ".toml";
   candidates.push_back(as_given);
   if (!case_dir.empty()) {
@@ -32,9 +34,11 @@ std::string ResolveLubricantPath(const std::string& name, const std::string& cas
 }
 
 std::string LubricantSearchText(const std::string& case_path) {
+  // In the order searched (ResolveLubricantPath).
   std::string s = "sae40, sae90, reference_z068 or NAME, as NAME.toml";
-  if (!case_path.empty()) s += " beside the case, in ../lubricants of it";
-  s += std::string(case_path.empty() ? "" : ",") + " in $TEHL_LUBRICANT_DIR";
+  if (!case_path.empty()) s += " beside the case,";
+  s += " in $TEHL_LUBRICANT_DIR";
+  if (!case_path.empty()) s += ", in ../lubricants of the case";
   for (const fs::path& d : DataDirs("lubricants", nullptr)) s += ", in " + d.string();
   return s + "; or a path to a lubricant .toml file";
 }

@@ -106,8 +106,9 @@ TEST(HardCasesVerification, InvalidConditionsAreReportedNotThrown) {
                                                              good.load_n_per_m, good.temperature_k}});
   for (double w : {0.0, -1e5, nan}) cases.push_back({"w", {good.reduced_radius_m, good.u1_m_s,
                                                             good.u2_m_s, w, good.temperature_k}});
-  // 40 "K" is 40 degrees Celsius given as kelvin (units.hpp: kMinAbsoluteTemperatureK).
-  for (double t : {40.0, 0.0, nan})
+  // 40 "K" is 40 degrees Celsius given as kelvin, and no oil is at 5000 K (units.hpp:
+  // kMinAbsoluteTemperatureK, kMaxTemperatureK).
+  for (double t : {40.0, 0.0, 5000.0, nan})
     cases.push_back({"T", {good.reduced_radius_m, good.u1_m_s, good.u2_m_s, good.load_n_per_m, t}});
   for (const Bad& b : cases) {
     // From an empty state and from a valid starting guess: neither may gain a NaN.
