@@ -97,6 +97,12 @@ TEST(LubricantCommand, ACaseFindsItsOwnLubricantByNameAndAMissingOneListsTheFold
   std::ofstream(dir / "disc.toml") << text;
   const testing::RunResult ok = RunTehl("case --check '" + (dir / "disc.toml").string() + "'");
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  // The case by its bare file name, from its own folder (the usual way to run one).
+  const fs::path was = fs::current_path();
+  fs::current_path(dir);
+  const testing::RunResult bare = RunTehl("case --check disc.toml");
+  fs::current_path(was);
+  EXPECT_EQ(bare.exit_code, 0) << bare.err;
   text.replace(text.find("vg100"), 5, "vg101");
   std::ofstream(dir / "disc.toml", std::ios::trunc) << text;
   const testing::RunResult bad = RunTehl("case --check '" + (dir / "disc.toml").string() + "'");
