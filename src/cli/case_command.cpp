@@ -47,6 +47,7 @@ Command AddCaseCommand(CLI::App& app) {
                               " steps (" + plan.step_rule + ") on " +
                               std::to_string(plan.grid.size()) + " nodes (" + plan.grid_rule + ")";
                   if (!plan.inlet_note.empty()) plan_text += "\n  note: " + plan.inlet_note;
+                  for (const std::string& n : plan.input_notes) plan_text += "\n  note: " + n;
                 } else if (doc.problems().empty() && doc.HasSection("contact")) {
                   const internal::ContactInputs in = internal::ReadContact(doc);
                   if (doc.problems().empty()) internal::CheckFilmScale(doc, in, film);
@@ -57,6 +58,7 @@ Command AddCaseCommand(CLI::App& app) {
                     plan_text = "line contact on " + std::to_string(plan.grid.size()) + " nodes (" +
                                 plan.rule + ")";
                     if (!plan.inlet_note.empty()) plan_text += "\n  note: " + plan.inlet_note;
+                    for (const std::string& n : plan.input_notes) plan_text += "\n  note: " + n;
                   }
                 }
               }

@@ -99,6 +99,23 @@ void Report(std::ostream& o,
                     .c_str(),
                 m.static_force_n(), m.natural_frequency_hz(), nr, nr / 2, nr / 3);
   o << buf;
+  if (mesh.corner_contact()) {
+    // Under F_s the pairs touch beyond A and E: the loaded mesh is stiffer than the nominal
+    // mean, and the resonance lies higher. Mean of F_s / x_s over 400 phases.
+    double k_loaded = 0;
+    const double pb = mesh.base_pitch_m(), fs = m.static_force_n();
+    for (int i = 0; i < 400; ++i)
+      k_loaded += fs / mesh.StaticApproachAt(pb * (i + 0.5) / 400, false, fs) / 400;
+    const double f_loaded = std::sqrt(k_loaded / m.equivalent_mass_kg()) / (2 * kPi);
+    std::snprintf(buf, sizeof buf,
+                  "  corner contact: pairs mesh beyond A and E where the approach exceeds the "
+                  "separation of their tip corner (followed %.3f mm before A and %.3f mm after "
+                  "E); under F_s the mean mesh stiffness is %.4g N/m (f_n %.2f Hz, resonance "
+                  "near %.1f rpm)\n",
+                  mesh.corner_before_m() * 1e3, mesh.corner_after_m() * 1e3, k_loaded, f_loaded,
+                  60.0 * f_loaded / mesh.pinion_teeth());
+    o << buf;
+  }
   const TipRelief& relief = mesh.relief();
   if (relief.Active()) {
     std::snprintf(buf, sizeof buf,
@@ -158,7 +175,7 @@ Command AddDynamicsCommand(CLI::App& app) {
         }
         const internal::DynamicsCase d = internal::ReadDynamicsCase(doc, *c);
         doc.ThrowIfProblems();
-        const std::unique_ptr<TorsionalMesh> mesh = internal::MakeTorsionalMesh(*c);
+        const std::unique_ptr<TorsionalMesh> mesh = internal::MakeTorsionalMesh(*c, d);
         TorsionalModel model(*mesh, d.params);
         const DynamicResponse r = SolvePeriodicResponse(model, d.options);
 
@@ -205,12 +222,13 @@ Command AddDynamicsCommand(CLI::App& app) {
 
         const std::vector<SweepPoint> sweep =
             SweepSpeeds(*mesh, d.params, speeds, d.options, args->threads);
-        std::vector<internal::CsvColumn> t(11);
+        // The sweep holds the case's pinion torque (the power grows with the speed).
+        std::vector<internal::CsvColumn> t(12);
         const char* th[] = {"pinion_speed_rpm",     "mesh_frequency_hz", "dynamic_load_factor",
                             "pair_load_factor",     "min_force_n",       "separated_fraction",
                             "back_flank_fraction",  "periodic",          "periods",
-                            "natural_frequency_hz", "resonance_rpm"};
-        for (int i = 0; i < 11; ++i) t[i].header = th[i];
+                            "natural_frequency_hz", "resonance_rpm",     "pinion_torque_nm"};
+        for (int i = 0; i < 12; ++i) t[i].header = th[i];
         int not_periodic = 0;
         for (const SweepPoint& s : sweep) {
           const double v[] = {s.pinion_speed_rpm,
@@ -223,8 +241,9 @@ Command AddDynamicsCommand(CLI::App& app) {
                               s.periodic ? 1.0 : 0.0,
                               static_cast<double>(s.periods),
                               r.natural_frequency_hz,
-                              60.0 * r.natural_frequency_hz / mesh->pinion_teeth()};
-          for (int i = 0; i < 11; ++i) t[i].values.push_back(v[i]);
+                              60.0 * r.natural_frequency_hz / mesh->pinion_teeth(),
+                              d.params.pinion_torque_nm};
+          for (int i = 0; i < 12; ++i) t[i].values.push_back(v[i]);
           not_periodic += !s.periodic;
         }
         const std::string sweep_csv = (dir / (name + "_dynamics_sweep.csv")).string();

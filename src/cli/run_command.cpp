@@ -94,6 +94,7 @@ int RunGear(const RunArgs& a) {
   NoteCycleSpikes(r);
   NoteCycleEdges(r);
   NoteCycleInlet(r);
+  for (const std::string& n : r.input_notes) std::printf("note: %s\n", n.c_str());
   NoteRestarts(r.steps, [](size_t k, const MeshCycleStep& s) {
     return Where("step %zu (s = %.4g mm)", k, s.s_m * 1e3);
   });
@@ -139,7 +140,12 @@ int RunContact(const RunArgs& a) {
   if (last.summary.usable() && r.thermal)
     std::printf("thermal: T_max = %.5g K (rise %.3g K), %s\n", last.t_max_k,
                 last.t_max_k - r.inlet_temperature_k, FilmModelText(r.non_newtonian));
-  if (last.summary.usable() && last.flash_rise_blok_k > 0) {  // sliding, elastic
+  const bool unphysical_mu =  // the friction note says why; no flash temperature from it
+      !r.non_newtonian && last.friction_coefficient > kNewtonianFrictionNote;
+  if (last.summary.usable() && last.flash_rise_blok_k > 0 && unphysical_mu) {
+    std::printf("mu = %.4g (%s, not physical: note below); no flash temperature from it\n",
+                last.friction_coefficient, FilmModelText(r.non_newtonian));
+  } else if (last.summary.usable() && last.flash_rise_blok_k > 0) {  // sliding, elastic
     std::printf("mu = %.4g (%s); flash temperature (Blok%s, with this mu): rise %.3g K",
                 last.friction_coefficient, FilmModelText(r.non_newtonian),
                 r.finite_peclet ? ", finite Peclet" : "", last.flash_rise_blok_k);
@@ -153,6 +159,7 @@ int RunContact(const RunArgs& a) {
     NoteContactEdge(last.hertz_edge);
     NoteContactInlet(last.inlet, r.x_start_b, {r.x_start_m, r.x_end_m, r.grid_points});
   }
+  for (const std::string& n : r.input_notes) std::printf("note: %s\n", n.c_str());
   NoteContactPeclet(r);
   NoteNewtonianFriction(r, [](size_t k, const ContactStepRecord& s) {
     return Where("step %zu, t = %.4g s", k, s.time_s);

@@ -34,11 +34,29 @@ void NoteContactSpike(const OutletSpike& spike) {
 void PrintCycleFlash(const MeshCycleResult& r) {
   if (UsableSteps(r) == 0 || !r.elastic) return;
   const std::vector<double> flash = r.BlokFlashRises();
-  size_t at = 0;
-  for (size_t k = 1; k < r.steps.size(); ++k)
-    if (Usable(r, k) && flash[k] > flash[at]) at = k;
+  // A Newtonian mu above kNewtonianFrictionNote is not physical (the friction note says so),
+  // and neither is the flash temperature from it: the maximum is taken over the other films.
+  size_t at = r.steps.size(), left_out = 0;
+  for (size_t k = 0; k < r.steps.size(); ++k) {
+    if (!Usable(r, k)) continue;
+    if (!r.non_newtonian && r.steps[k].friction_coefficient > kNewtonianFrictionNote) {
+      ++left_out;
+      continue;
+    }
+    if (at == r.steps.size() || flash[k] > flash[at]) at = k;
+  }
+  if (at == r.steps.size()) {
+    std::printf(
+        "flash temperature (Blok): not given: every film's Newtonian mu exceeds %.1f "
+        "(note below)\n",
+        kNewtonianFrictionNote);
+    return;
+  }
   std::printf("flash temperature (Blok%s, with each step's mu): max rise %.3g K at s = %.4g mm",
               r.finite_peclet ? ", finite Peclet" : "", flash[at], r.steps[at].s_m * 1e3);
+  if (left_out > 0)
+    std::printf(" (%zu films with a Newtonian mu above %.1f left out)", left_out,
+                kNewtonianFrictionNote);
   if (r.thermal) {
     double t1 = 0, t2 = 0;
     const double t0 = r.inlet_temperature_k;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "tehl/gear/path_of_contact.hpp"
 #include "tehl/units.hpp"
@@ -11,8 +12,14 @@ namespace tehl {
 TorsionalMesh::TorsionalMesh(const GearPair& pair,
                              const PairStiffnessFn& k,
                              int n,
-                             const TipRelief& relief)
+                             const TipRelief& relief,
+                             double corner_max_gap_m)
     : relief_(relief) {
+  if (corner_max_gap_m > 0) {
+    corner_.emplace(pair, Flank::kDrive, corner_max_gap_m);
+    corner_before_m_ = corner_->before_m();
+    corner_after_m_ = corner_->after_m();
+  }
   const PathOfContact path(pair, 1.0, Flank::kDrive);
   const LineOfAction& l = path.line();
   base_pitch_m_ = path.base_pitch_m();
@@ -57,7 +64,9 @@ void TorsionalMesh::BuildSegments(double s_pitch) {
   const double pb = base_pitch_m_, g = length_m_;
   const double tol = 1e-12 * pb;
   std::vector<double> cuts = {0.0, pb};
-  for (double q : {std::fmod(g, pb), std::fmod(s_pitch, pb)})
+  const double lo = -corner_before_m_, hi = g + corner_after_m_;  // where pairs may touch
+  const auto wrap = [pb](double q) { return q - std::floor(q / pb) * pb; };
+  for (double q : {std::fmod(g, pb), std::fmod(s_pitch, pb), wrap(lo), wrap(hi)})
     if (q > tol && q < pb - tol) cuts.push_back(q);
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end(),
@@ -69,9 +78,11 @@ void TorsionalMesh::BuildSegments(double s_pitch) {
     seg.begin_m = cuts[i];
     seg.end_m = cuts[i + 1];
     const double mid = 0.5 * (seg.begin_m + seg.end_m);
-    for (int j = 0; mid + j * pb <= g; ++j) {
+    for (int j = static_cast<int>(std::ceil((lo - mid) / pb)); mid + j * pb <= hi; ++j) {
+      const double s = mid + j * pb;
       seg.pairs.push_back(j);
-      seg.sliding.push_back(mid + j * pb > s_pitch ? +1 : -1);
+      seg.sliding.push_back(s > s_pitch ? +1 : -1);
+      seg.corner.push_back(s < 0 || s > g ? 1 : 0);
     }
     segments_.push_back(std::move(seg));
   }
@@ -123,14 +134,23 @@ double TorsionalMesh::MeshStiffness(int segment, double phase) const {
   const MeshSegment& seg = segments_[segment];
   if (constant_mesh_n_per_m_ > 0) return constant_mesh_n_per_m_;
   double sum = 0;
-  for (int j : seg.pairs) sum += PairStiffness(phase + j * base_pitch_m_);
+  for (size_t i = 0; i < seg.pairs.size(); ++i)
+    if (!seg.corner[i]) sum += PairStiffness(phase + seg.pairs[i] * base_pitch_m_);
   return sum;
 }
 
 double TorsionalMesh::PairShare(int segment, int index, double phase) const {
   const MeshSegment& seg = segments_[segment];
+  if (seg.corner[index]) return 0.0;
   if (constant_mesh_n_per_m_ > 0) return 1.0 / seg.pairs.size();
   return PairStiffness(phase + seg.pairs[index] * base_pitch_m_) / MeshStiffness(segment, phase);
+}
+
+double TorsionalMesh::GapAt(double s) const {
+  const double inside =
+      relief_.Active() ? relief_.GapAt(std::clamp(s, 0.0, length_m_), length_m_) : 0.0;
+  if (s >= 0 && s <= length_m_) return inside;
+  return corner_ ? corner_->GapAt(s) + inside : std::numeric_limits<double>::infinity();
 }
 
 void TorsionalMesh::Locate(double s, bool left, int* seg_out, double* phase_out, int* index) const {
@@ -169,27 +189,27 @@ double TorsionalMesh::ShareAt(double s, bool left, double x) const {
 }
 
 double TorsionalMesh::ElasticForce(int segment, double phase, double x) const {
-  if (!relief_.Active()) return MeshStiffness(segment, phase) * x;
+  if (!gapped()) return MeshStiffness(segment, phase) * x;
   const MeshSegment& seg = segments_[segment];
   double f = 0;
   for (size_t i = 0; i < seg.pairs.size(); ++i) {
     const double s = phase + seg.pairs[i] * base_pitch_m_;
     const double k =
         constant_mesh_n_per_m_ > 0 ? constant_mesh_n_per_m_ / seg.pairs.size() : PairStiffness(s);
-    f += k * std::max(0.0, x - relief_.GapAt(s, length_m_));
+    f += k * std::max(0.0, x - GapAt(s));
   }
   return f;
 }
 
 double TorsionalMesh::PairShare(int segment, int index, double phase, double x) const {
-  if (!relief_.Active()) return PairShare(segment, index, phase);
+  if (!gapped()) return PairShare(segment, index, phase);
   const MeshSegment& seg = segments_[segment];
   const double total = ElasticForce(segment, phase, x);
   if (!(total > 0)) return 0.0;
   const double s = phase + seg.pairs[index] * base_pitch_m_;
   const double k =
       constant_mesh_n_per_m_ > 0 ? constant_mesh_n_per_m_ / seg.pairs.size() : PairStiffness(s);
-  return k * std::max(0.0, x - relief_.GapAt(s, length_m_)) / total;
+  return k * std::max(0.0, x - GapAt(s)) / total;
 }
 
 double TorsionalMesh::StaticApproachAt(double s, bool left, double force) const {
@@ -202,7 +222,7 @@ double TorsionalMesh::StaticApproachAt(double s, bool left, double force) const 
     const double q = phase + j * base_pitch_m_;
     k.push_back(constant_mesh_n_per_m_ > 0 ? constant_mesh_n_per_m_ / m.pairs.size()
                                            : PairStiffness(q));
-    gap.push_back(relief_.GapAt(q, length_m_));
+    gap.push_back(GapAt(q));
   }
   return CommonApproach(k, gap, force);
 }

@@ -90,15 +90,24 @@ double TorsionalModel::PhaseAt(long period, double t) const {
 
 double TorsionalModel::MeshForce(ContactState s, int seg, double phase, double x, double v) const {
   switch (s) {
-    case ContactState::kDriveFlank:
-      return mesh_.ElasticForce(seg, phase, x) + c_ * v;
+    // Flanks in contact push and never pull: when the flanks part faster than the teeth
+    // spring back, the damper's share would make the force pull (k x + c x' < 0 at x > 0);
+    // the contact force is then zero until the flanks separate at x = 0. Past the guard
+    // (x <= 0, before the integrator has located the separation) the force continues
+    // smoothly, as the event location needs.
+    case ContactState::kDriveFlank: {
+      const double f = mesh_.ElasticForce(seg, phase, x) + c_ * v;
+      return x > 0 ? std::max(0.0, f) : f;
+    }
     case ContactState::kSeparated:
       return 0.0;
-    case ContactState::kBackFlank:
+    case ContactState::kBackFlank: {
       // The back flanks close by -(x + b) on the drive flanks' mesh, their tips relieved as
       // the drive flanks' (a relief is cut on both flanks of a tooth): without relief
       // k(t) (x + b).
-      return -mesh_.ElasticForce(seg, phase, -(x + p_.backlash_m)) + c_ * v;
+      const double f = -mesh_.ElasticForce(seg, phase, -(x + p_.backlash_m)) + c_ * v;
+      return x + p_.backlash_m < 0 ? std::min(0.0, f) : f;
+    }
   }
   return 0.0;
 }

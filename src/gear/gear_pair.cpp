@@ -92,12 +92,16 @@ FlankGeometry MakeFlank(
     return f;
   }
   const double sin_t = std::sin(f.pressure_angle_rad);
-  // Textbook limit with the rack's working depth h_aP* (the rule of the standard tables).
-  f.min_shift_no_undercut = s.addendum_coefficient - z * sin_t * sin_t / (2.0 * std::cos(beta));
-  f.undercut = x < f.min_shift_no_undercut;
-  // Form circle from the actual rack: its straight flank ends h_F0 m_n below the reference
-  // line, h_F0 = h_fP - rho_fP (1 - sin alpha_n) (ISO 21771 d_Ff).
+  // The generating rack's straight flank ends h_F0 m_n below the reference line, h_F0 = h_fP -
+  // rho_fP (1 - sin alpha_n) (ISO 21771 d_Ff). Undercut starts when that end passes the
+  // interference point T (the involute then reaches the base circle): (h_F0 - x) m_n >=
+  // r sin^2(alpha_t). The textbook rule with h_aP* in place of h_F0 is the same for racks
+  // whose straight flank ends at the working depth (ISO 53: 0.99997) and misses the undercut
+  // of sharper tools (rho_fP = 0: h_F0 = h_fP).
   const double h0 = s.dedendum_coefficient - s.root_fillet_coefficient * (1.0 - std::sin(alpha_n));
+  f.min_shift_no_undercut = h0 - z * sin_t * sin_t / (2.0 * std::cos(beta));
+  f.undercut = x < f.min_shift_no_undercut;
+  // Form circle from the same rack.
   const double q = pitch_radius * sin_t - (h0 - x) * s.module_m / sin_t;
   f.form_radius_m = q > 0 ? std::hypot(f.base_radius_m, q) : f.base_radius_m;
   return f;

@@ -100,13 +100,19 @@ IsoStiffness IsoMethodB(const ToothBlank& pinion,
     const double cos2_beta_b = 1.0 - sin_beta_b * sin_beta_b;
     return b.teeth / (cos2_beta_b * std::cos(beta));
   };
-  const double inv_zn1 = 1.0 / virtual_teeth(pinion);
-  const double inv_zn2 = wheel.internal ? 0.0 : 1.0 / virtual_teeth(wheel);
+  // ISO 6336-1 numbers the smaller gear 1 whichever drives: an external pair whose driver
+  // has more teeth enters the fit with the two members swapped (a ring is always gear 2).
+  const bool swap = !wheel.internal && wheel.teeth < pinion.teeth;
+  const ToothBlank& gear1 = swap ? wheel : pinion;
+  const ToothBlank& gear2 = swap ? pinion : wheel;
+  const double xs1 = gear1.profile_shift, xs2 = gear2.profile_shift;
+  const double inv_zn1 = 1.0 / virtual_teeth(gear1);
+  const double inv_zn2 = gear2.internal ? 0.0 : 1.0 / virtual_teeth(gear2);
 
   IsoStiffness out;
-  out.q_prime_mm_um_per_n = kC[0] + kC[1] * inv_zn1 + kC[2] * inv_zn2 + kC[3] * x1 +
-                            kC[4] * x1 * inv_zn1 + kC[5] * x2 + kC[6] * x2 * inv_zn2 +
-                            kC[7] * x1 * x1 + kC[8] * x2 * x2;
+  out.q_prime_mm_um_per_n = kC[0] + kC[1] * inv_zn1 + kC[2] * inv_zn2 + kC[3] * xs1 +
+                            kC[4] * xs1 * inv_zn1 + kC[5] * xs2 + kC[6] * xs2 * inv_zn2 +
+                            kC[7] * xs1 * xs1 + kC[8] * xs2 * xs2;
   out.c_prime_th_n_per_mm_um = 1.0 / out.q_prime_mm_um_per_n;
   const double c_b = 0.5 * (BasicRackFactor(pinion) + BasicRackFactor(wheel));
   const double e1 = pinion.youngs_modulus_pa, e2 = wheel.youngs_modulus_pa;

@@ -15,6 +15,7 @@ list(APPEND TEHL_SOURCES
   src/gear/operating_point.cpp
   src/gear/load_sharing.cpp
   src/gear/tip_relief.cpp
+  src/gear/corner_contact.cpp
   src/gear/mesh_cycle.cpp
   src/gear/tooth_profile.cpp
   src/gear/tooth_blank.cpp

@@ -64,6 +64,32 @@ class LawReader {
   double t0_ = 0;
 };
 
+// eta0 outside what liquids that lubricate have, where a unit slip is the likely cause: a
+// kinematic viscosity in m^2/s (320 cSt = 3.2e-4 m^2/s, about 0.29 Pa s at 900 kg/m^3) is
+// below water's 0.00089 Pa s (25 C); a viscosity in mPa s is 1000 times too large, above
+// the 100 Pa s that no oil reaches from 0 C up (ISO VG 3200, the heaviest grade, has about
+// 3 Pa s at 40 C). Colder reference temperatures keep the schema's range.
+constexpr double kMinOilViscosityPaS = 5e-4;
+constexpr double kMaxOilViscosityPaS = 100.0;
+constexpr double kWarmReferenceK = 273.15;
+
+void CheckViscosityIsPlausible(Document* doc, double t0_k) {
+  if (!doc->Given("viscosity", "viscosity_pa_s") || Rejected(*doc, "viscosity", "viscosity_pa_s"))
+    return;
+  const double eta = doc->Real("viscosity", "viscosity_pa_s");
+  if (eta < kMinOilViscosityPaS) {
+    doc->Problem("viscosity", "viscosity_pa_s",
+                 "below any lubricating oil (water: 0.00089 Pa s at 25 C): a kinematic "
+                 "viscosity in m^2/s? (eta [Pa s] = nu [mm^2/s = cSt] x rho [kg/m^3] x 1e-6)",
+                 "a dynamic viscosity >= 0.0005 Pa s");
+  } else if (eta > kMaxOilViscosityPaS && t0_k >= kWarmReferenceK) {
+    doc->Problem("viscosity", "viscosity_pa_s",
+                 "above any lubricating oil at reference_temperature_k >= 273.15 K (ISO VG 3200: "
+                 "about 3 Pa s at 40 C): in mPa s? (1 mPa s = 0.001 Pa s)",
+                 "a dynamic viscosity <= 100 Pa s in Pa s");
+  }
+}
+
 Lubricant Read(Document doc) {
   for (const auto& p : doc.problems())
     if (p.key == "(syntax)" || p.key == "(file)") doc.ThrowIfProblems();
@@ -90,6 +116,7 @@ Lubricant Read(Document doc) {
     const double k0 = doc.Real("thermal", "conductivity_w_mk");
     conductivity = laws.Build("thermal", [&] { return MakeConductivityModel(law, k0); });
   }
+  CheckViscosityIsPlausible(&doc, laws.t0());
   std::optional<EyringParameters> eyring;
   if (doc.HasSection("eyring"))
     eyring = EyringParameters{doc.Real("eyring", "eyring_stress_pa"),

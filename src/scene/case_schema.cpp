@@ -175,7 +175,9 @@ SectionSpec NumericsSection() {
                0.0, 1.0),
           Text("linear_solver", "\"auto\"", "Newton linear solver",
                {"auto", "dense", "newton_krylov", "reused_lu"}),
-          Positive("newton_tolerance", "-", "1e-8", "relative residual at which Newton stops"),
+          Real("newton_tolerance", "-", "1e-8",
+               "relative residual at which Newton stops (below 1e-14 rounding decides)", 1e-14, 1.0,
+               true, false),
           Integer("max_newton_iterations", "-", "100", "Newton iterations per solve", 1.0, 10000.0),
           Integer("film_nodes", "-", "11", "nodes across the film for the energy equation", 3.0,
                   201.0),
@@ -200,30 +202,36 @@ SectionSpec OutputSection() {
 }
 
 SectionSpec DynamicsSection() {
-  return {"dynamics", "torsional dynamics of a gear pair (tehl dynamics; [effects] dynamic_load)",
-          false, {
-    Real("damping_ratio", "-", "0.05",
-         "mesh damping ratio zeta, c = 2 zeta sqrt(k_mean m_e) (seed 000: 0.03 to 0.17)", 0.0, 1.0,
-         true, false),
-    Real("backlash_m", "m", "",
-         "backlash along the line of action; absent = from the centre distance", 0.0),
-    Text("friction", "\"buckingham\"", "tooth friction law (buckingham: seed 000 eq. 4.10)",
-         {"none", "constant", "buckingham"}),
-    Real("friction_coefficient", "-", "0.05", "friction coefficient of friction = \"constant\"",
-         0.0, 1.0, true, false),
-    Positive("pinion_inertia_kg_m2", "kg m^2", "",
-             "pinion polar moment of inertia; absent = solid disc of the pitch diameter"),
-    Positive("wheel_inertia_kg_m2", "kg m^2", "",
-             "wheel polar moment of inertia; absent = solid disc of the pitch diameter"),
-    Real("relative_tolerance", "-", "1e-8", "relative error tolerance of the integrator", 0.0,
-         1e-3, false, true),
-    Real("periodic_tolerance", "-", "1e-6",
-         "periodic when the state repeats after a mesh period to this (relative)", 0.0, 1.0,
-         false, false),
-    Integer("max_periods", "-", "5000", "mesh periods integrated at most", 2.0, 1e7),
-    Integer("output_samples", "-", "400", "samples of the periodic response per mesh period", 8.0,
-            1e6),
-  }};
+  return {
+      "dynamics",
+      "torsional dynamics of a gear pair (tehl dynamics; [effects] dynamic_load)",
+      false,
+      {
+          Real("damping_ratio", "-", "0.05",
+               "mesh damping ratio zeta, c = 2 zeta sqrt(k_mean m_e) (seed 000: 0.03 to 0.17)", 0.0,
+               1.0, true, false),
+          Real("backlash_m", "m", "",
+               "backlash along the line of action; absent = from the centre distance", 0.0),
+          Flag("corner_contact", "true",
+               "loaded pairs mesh beyond A and E where the approach closes the corner's separation "
+               "(false: the stiffness steps there, seed 000)"),
+          Text("friction", "\"buckingham\"", "tooth friction law (buckingham: seed 000 eq. 4.10)",
+               {"none", "constant", "buckingham"}),
+          Real("friction_coefficient", "-", "0.05",
+               "friction coefficient of friction = \"constant\"", 0.0, 1.0, true, false),
+          Positive("pinion_inertia_kg_m2", "kg m^2", "",
+                   "pinion polar moment of inertia; absent = solid disc of the pitch diameter"),
+          Positive("wheel_inertia_kg_m2", "kg m^2", "",
+                   "wheel polar moment of inertia; absent = solid disc of the pitch diameter"),
+          Real("relative_tolerance", "-", "1e-8", "relative error tolerance of the integrator", 0.0,
+               1e-3, false, true),
+          Real("periodic_tolerance", "-", "1e-6",
+               "periodic when the state repeats after a mesh period to this (relative)", 0.0, 1.0,
+               false, false),
+          Integer("max_periods", "-", "5000", "mesh periods integrated at most", 2.0, 1e7),
+          Integer("output_samples", "-", "400", "samples of the periodic response per mesh period",
+                  8.0, 1e6),
+      }};
 }
 
 SectionSpec MotorSection() {

@@ -126,7 +126,9 @@ ContactGridPlan PlanContactGrid(const ContactInputs& in, const FilmCase& film) {
     units = units.Max(GridUnitsFor(film, b, r, um, w));
     choice.Add(r, um, w);
   }
-  return {choice.Grid(units), choice.Rule(units), choice.InletNote(units)};
+  ContactGridPlan plan{choice.Grid(units), choice.Rule(units), choice.InletNote(units), {}};
+  plan.input_notes = InputNotes(film, plan.grid.dx_m(), plan.grid.size());
+  return plan;
 }
 
 void CheckContactRoughSteps(Document& doc,

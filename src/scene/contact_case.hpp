@@ -34,6 +34,7 @@ struct ContactGridPlan {
   UniformGrid grid;
   std::string rule;        // how the node count was chosen
   std::string inlet_note;  // GridChoice::InletNote: "" or the inlet's estimated cost
+  std::vector<std::string> input_notes;  // InputNotes (film_case.hpp)
 };
 ContactGridPlan PlanContactGrid(const ContactInputs& in, const FilmCase& film);
 

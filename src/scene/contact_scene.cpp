@@ -79,6 +79,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   result.x_end_m = grid.x_end_m();
   result.grid_points = grid.size();
   result.grid_rule = plan.rule;
+  result.input_notes = plan.input_notes;
   result.inlet_temperature_k = film.inlet_temperature_k;
   result.finite_peclet = film.effects.finite_peclet;
   result.thermal = film.effects.thermal;

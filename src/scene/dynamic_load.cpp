@@ -47,6 +47,10 @@ DynamicsCase ReadDynamicsCase(Document& doc, const GearCase& c) {
                            std::cos(pair.line(Flank::kDrive).working_pressure_angle_rad)
                      : doc.Real("dynamics", "backlash_m");
 
+  // Corner contact is followed out to a separation of 0.05 m_n (0.1 mm at m_n = 2 mm: some
+  // ten times the static approach of ordinary gears; corner_contact.hpp).
+  if (doc.Bool("dynamics", "corner_contact")) d.corner_max_gap_m = 0.05 * pair.spec().module_m;
+
   DynamicResponseOptions& o = d.options;
   o.relative_tolerance = doc.Real("dynamics", "relative_tolerance");
   o.periodic_tolerance = doc.Real("dynamics", "periodic_tolerance");
@@ -60,12 +64,13 @@ DynamicsCase ReadDynamicsCase(Document& doc, const GearCase& c) {
   return d;
 }
 
-std::unique_ptr<TorsionalMesh> MakeTorsionalMesh(const GearCase& c) {
-  return std::make_unique<TorsionalMesh>(*c.pair, c.pair_stiffness, 33, c.tip_relief);
+std::unique_ptr<TorsionalMesh> MakeTorsionalMesh(const GearCase& c, const DynamicsCase& d) {
+  return std::make_unique<TorsionalMesh>(*c.pair, c.pair_stiffness, 33, c.tip_relief,
+                                         d.corner_max_gap_m);
 }
 
 DynamicLoad::DynamicLoad(const GearCase& c, const DynamicsCase& d)
-    : mesh_(MakeTorsionalMesh(c)), model_(std::make_unique<TorsionalModel>(*mesh_, d.params)) {
+    : mesh_(MakeTorsionalMesh(c, d)), model_(std::make_unique<TorsionalModel>(*mesh_, d.params)) {
   response_ = SolvePeriodicResponse(*model_, d.options);
 }
 
@@ -74,10 +79,10 @@ double DynamicLoad::LoadFactorAt(double s, bool left) const {
   s = std::clamp(s, 0.0, mesh_->length_m());
   double phase = s - std::floor(s / pb) * pb;
   if (left && phase < 1e-9 * pb && s > 0) phase = pb;
-  if (!mesh_->relief().Active()) return response_.ForceAt(phase, left) / response_.static_force_n;
-  // With tip relief the shares follow the approach: the tracked pair's dynamic load (its
-  // share at the dynamic x of the force) over its static load (its share at the static
-  // approach of F_static).
+  if (!mesh_->gapped()) return response_.ForceAt(phase, left) / response_.static_force_n;
+  // With tip relief or corner contact the shares follow the approach: the tracked pair's
+  // dynamic load (its share at the dynamic x of the force) over its static load (its share
+  // at the static approach of F_static).
   const double f0 = response_.static_force_n;
   const double share0 = mesh_->ShareAt(s, left, mesh_->StaticApproachAt(s, left, f0));
   const DynamicSample d = response_.SampleAt(phase, left);

@@ -25,6 +25,8 @@ struct DynamicsCase {
   DynamicResponseOptions options;
   bool inertia_from_blanks[2] = {true, true};  // pinion, wheel: solid discs (not given)
   bool backlash_from_geometry = true;          // backlash_m not given
+  // Corner contact outside [A, E] (corner_contact.hpp) up to this separation [m]; 0: off.
+  double corner_max_gap_m = 0;
 };
 
 // Reads [dynamics] (defaults when absent) for the gear case `c`; problems go into `doc`.
@@ -35,7 +37,7 @@ struct DynamicsCase {
 DynamicsCase ReadDynamicsCase(Document& doc, const GearCase& c);
 
 // The torsional mesh of the case (its stiffness method, drive flanks).
-std::unique_ptr<TorsionalMesh> MakeTorsionalMesh(const GearCase& c);
+std::unique_ptr<TorsionalMesh> MakeTorsionalMesh(const GearCase& c, const DynamicsCase& d);
 
 // The periodic response at the case's speed, kept for the mesh cycle.
 class DynamicLoad {

@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <string>
 #include <utility>
 
 #include "scene/case_reader.hpp"
 #include "tehl/ehl/inlet_truncation.hpp"
 #include "tehl/error.hpp"
+#include "tehl/lubricant/barus_viscosity.hpp"
+#include "tehl/lubricant/roelands_gamma_viscosity.hpp"
 #include "tehl/units.hpp"
 
 namespace tehl::internal {
@@ -102,6 +106,65 @@ void CheckRoughnessResolution(Document& doc, const FilmCase& film, double dx_m) 
                 "wavelength_m >= " + FormatShort(2.0 * dx_m) +
                     " m on this grid, or more [numerics] grid_points");
   }
+}
+
+std::string RoughnessResolutionNote(const FilmCase& film, double dx_m, int nodes) {
+  if (!film.effects.roughness || !(dx_m > 0) || nodes < 2) return "";
+  double shortest = 0;
+  const char* which = "";
+  const std::pair<const char*, const SurfaceShape*> shapes[] = {{"surface1", film.surface1.get()},
+                                                                {"surface2", film.surface2.get()}};
+  for (const auto& [name, shape] : shapes) {
+    const auto* wave = dynamic_cast<const SinusoidalWaviness*>(shape);
+    if (!wave || !(wave->amplitude_m() > 0)) continue;
+    if (shortest == 0 || wave->wavelength_m() < shortest) {
+      shortest = wave->wavelength_m();
+      which = name;
+    }
+  }
+  const double cells = shortest / dx_m;
+  if (shortest == 0 || cells >= kWaveCellsNote) return "";
+  const double need = (nodes - 1) * kWaveCellsResolved / cells;
+  long long suggested = 2;
+  while (suggested < need) suggested *= 2;
+  char text[480];
+  std::snprintf(text, sizeof text,
+                "the waviness of %s (%.4g um) spans %.1f cells of the film grid (dx = %.3g um): "
+                "the thinnest film of a wave is within about 1.5 %% of the grid-converged one "
+                "from about %.0f cells per wavelength, and too thin and too highly pressed "
+                "below (docs/studies.md, \"Roughness grid\"); [numerics] grid_points = %lld "
+                "gives %.0f with the same x range",
+                which, shortest * 1e6, cells, dx_m * 1e6, kWaveCellsResolved, suggested + 1,
+                shortest / (dx_m * (nodes - 1) / suggested));
+  return text;
+}
+
+std::vector<std::string> InputNotes(const FilmCase& film, double dx_m, int nodes) {
+  std::vector<std::string> notes;
+  const std::string wave = RoughnessResolutionNote(film, dx_m, nodes);
+  if (!wave.empty()) notes.push_back(wave);
+  if (film.lubricant) {
+    const ViscosityModel& law = film.lubricant->viscosity();
+    const char* name = dynamic_cast<const RoelandsGammaViscosity*>(&law) ? "roelands_gamma"
+                       : dynamic_cast<const BarusViscosity*>(&law)       ? "barus"
+                                                                         : nullptr;
+    const bool exponential = name != nullptr;
+    const double t0 = film.lubricant->reference_temperature_k();
+    const double dt = film.inlet_temperature_k - t0;
+    if (exponential && std::abs(dt) > kGammaLawNoteK) {
+      char text[480];
+      std::snprintf(text, sizeof text,
+                    "the inlet (%.2f K) is %.0f K %s the lubricant's reference temperature "
+                    "(%.2f K): its %s law takes the viscosity there from one exponential "
+                    "temperature coefficient and keeps the pressure response of T0, which real "
+                    "oils follow only within a few tens of K (docs/case_format.md, \"Lubricant "
+                    "files\"): a file at that temperature, or one with the roelands (S0) law, "
+                    "is closer",
+                    film.inlet_temperature_k, std::abs(dt), dt > 0 ? "above" : "below", t0, name);
+      notes.push_back(text);
+    }
+  }
+  return notes;
 }
 
 ContactSolids ReadContactSolids(const Document& doc) {
@@ -200,8 +263,6 @@ FilmCase ReadFilmCase(Document& doc) {
   const std::string failed_step = doc.String("numerics", "failed_step");
   f.steady_restart = failed_step != "stop";
   f.skip_failed = failed_step == "steady_restart_or_skip";
-  if (o.tolerance >= 1.0)
-    doc.Problem("numerics", "newton_tolerance", "must be < 1", "a small positive number, e.g. 1e-8");
 
   if (f.effects.roughness) {
     f.surface1 = ReadSurface(doc, "surfaces.surface1");

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "base/schema.hpp"
 #include "tehl/ehl/film_effects.hpp"
@@ -83,6 +84,27 @@ inline constexpr double kMaxInletViscosityPaS = 1e4;
 // Sinusoidal waviness shorter than two cells of the film grid (dx [m]) is not represented on
 // it at all (Nyquist): reported at the surface's wavelength_m.
 void CheckRoughnessResolution(Document& doc, const FilmCase& film, double dx_m);
+
+// Cells per wavelength from which the thinnest film of sinusoidal waviness is within about
+// 1.5 % of the grid-converged one (docs/studies.md, "Roughness grid": min h_min moves by 15 %
+// on doubling from 3.7 cells, 3.9-4.6 % from 7.4, 1.2-1.6 % from 15); the note allows 14.9
+// (a 25 um wave on 513 nodes of the seed 004 grid) and asks for 15.
+inline constexpr double kWaveCellsResolved = 15.0;
+inline constexpr double kWaveCellsNote = 14.0;
+
+// "" when every sinusoidal waviness spans at least kWaveCellsNote cells of the grid
+// (nodes, spacing dx [m]); else a note naming the shortest wave, its cells and the
+// grid_points (2^k + 1, the same x range) that give it kWaveCellsResolved.
+std::string RoughnessResolutionNote(const FilmCase& film, double dx_m, int nodes);
+
+// An inlet temperature more than this from the lubricant file's reference temperature takes
+// the exponential (roelands_gamma, barus) temperature laws beyond where their one gamma
+// describes a real oil (lubricants/sae40.toml: 7.2 instead of 12.5-16.3 mPa s at 100 C) [K].
+inline constexpr double kGammaLawNoteK = 30.0;
+
+// The notes on the inputs a run prints before its results (and `case --check` with its
+// plan): RoughnessResolutionNote, and an inlet far from an exponential law's T0.
+std::vector<std::string> InputNotes(const FilmCase& film, double dx_m, int nodes);
 
 // Reads [lubricant], [effects], [numerics] and [surfaces]; problems go into `doc`.
 // Effects this version cannot simulate yet are problems at their key, never ignored.

@@ -85,7 +85,10 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
                   std::string(power ? "a larger power_w" : "a larger pinion_torque_nm") +
                       " (tooth loads >= " +
                       FormatShort(kMartinFilm * eta0 * st.contact.um_m_s / kMaxFilmToRadius) +
-                      " N/m at the pitch point)");
+                      " N/m at the pitch point), or check the lubricant's viscosity (eta0 = " +
+                      FormatShort(eta0) +
+                      " Pa s at the inlet: a value in mPa s is 1000 times "
+                      "too large)");
       return plan;
     }
   }
@@ -124,6 +127,7 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
   plan.inlet_note = choice.InletNote(units);
   const UniformGrid& grid = plan.grid;
   CheckRoughnessResolution(doc, film, grid.dx_m());
+  plan.input_notes = InputNotes(film, grid.dx_m(), grid.size());
 
   // Step count: the user's, or automatic; with roughness at least dt <= dx/um per segment.
   const long long user_steps = doc.Int("numerics", "steps");
@@ -151,7 +155,13 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
   }
   plan.s_steps = MeshCycleStepPositions(g, path.s_b_m(), path.s_d_m(), steps, min_seg, begin, end);
   char rule[256];
-  if (user_steps > 0)
+  const long long planned = static_cast<long long>(plan.s_steps.size()) - 1;
+  if (user_steps > 0 && planned != user_steps)
+    std::snprintf(rule, sizeof rule,
+                  "[numerics] steps = %lld, raised to %lld: each contact zone (A-B, B-D, D-E) "
+                  "takes at least one",
+                  user_steps, planned);
+  else if (user_steps > 0)
     std::snprintf(rule, sizeof rule, "[numerics] steps = %lld", user_steps);
   else
     std::snprintf(rule, sizeof rule,

@@ -52,6 +52,7 @@ struct MeshCyclePlan {
   std::string step_rule;        // how the step count was chosen, for the run's report
   std::string grid_rule;        // how the node count was chosen (automatic_grid.hpp)
   std::string inlet_note;       // GridChoice::InletNote: "" or the inlet's estimated cost
+  std::vector<std::string> input_notes;  // InputNotes (film_case.hpp)
 };
 
 // Plans the run; a user step count below what moving roughness needs (dt <= dx/um) is

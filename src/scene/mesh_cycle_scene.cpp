@@ -206,6 +206,7 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   r.planned_steps = static_cast<int>(s_steps.size()) - 1;
   r.step_rule = plan.step_rule;
   r.grid_rule = plan.grid_rule;
+  r.input_notes = plan.input_notes;
   if (!ro.quiet && film.grid_points == 0 && grid.size() > internal::kAutomaticGridMinNodes)
     std::fprintf(stderr, "grid %d nodes (%s)\n", grid.size(), plan.grid_rule.c_str());
 

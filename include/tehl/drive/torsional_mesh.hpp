@@ -17,8 +17,10 @@
 // after construction.
 #pragma once
 
+#include <optional>
 #include <vector>
 
+#include "tehl/gear/corner_contact.hpp"
 #include "tehl/gear/gear_pair.hpp"
 #include "tehl/gear/load_sharing.hpp"
 #include "tehl/gear/tip_relief.hpp"
@@ -30,6 +32,9 @@ struct MeshSegment {
   double end_m = 0;          // phase at the end [m], in (0, p_b]
   std::vector<int> pairs;    // offsets j of the pairs in contact (s = phi + j p_b), ascending
   std::vector<int> sliding;  // sign of u1 - u2 of each pair (+1 past the pitch point) [-]
+  // 1 for a pair outside [0, g_alpha], which touches only by corner contact (it carries load
+  // only once the approach exceeds its separation), 0 on the path of contact.
+  std::vector<int> corner;
 };
 
 class TorsionalMesh {
@@ -37,11 +42,15 @@ class TorsionalMesh {
   // The drive-flank mesh of `pair` with pair stiffness `k` [N/m] (see load_sharing.hpp);
   // chebyshev_points >= 3 samples of k on [0, g_alpha].
   // With `relief` the drive-flank pairs carry k_j max(0, x - e_j) at the approach x
-  // (tip_relief.hpp); without it k_j x.
+  // (tip_relief.hpp); without it k_j x. With corner_max_gap_m > 0 the pairs also mesh
+  // outside [0, g_alpha] by corner contact (corner_contact.hpp), up to that separation [m],
+  // with the stiffness of the pair at the nearer end of the path; 0: the pairs mesh on
+  // [0, g_alpha] only and the mesh stiffness steps at A and E (seed 000).
   TorsionalMesh(const GearPair& pair,
                 const PairStiffnessFn& k,
                 int chebyshev_points = 33,
-                const TipRelief& relief = {});
+                const TipRelief& relief = {},
+                double corner_max_gap_m = 0);
   // The same geometry with a constant mesh stiffness k_mesh [N/m] shared equally between the
   // pairs in contact (for limits and tests).
   static TorsionalMesh Constant(const GearPair& pair, double mesh_stiffness_n_per_m);
@@ -62,10 +71,12 @@ class TorsionalMesh {
   // Segment holding phase phi in [0, p_b): begin <= phi < end.
   int SegmentAt(double phase_m) const;
 
-  double PairStiffness(double s_m) const;                   // k(s), s in [0, g_alpha] [N/m]
-  double MeshStiffness(int segment, double phase_m) const;  // sum over the pairs [N/m]
+  double PairStiffness(double s_m) const;  // k(s), s clamped to [0, g_alpha] [N/m]
+  // Sum over the pairs on [0, g_alpha] (the nominal mesh stiffness; corner contacts add to
+  // it only as far as the approach closes their separation, see ElasticForce) [N/m].
+  double MeshStiffness(int segment, double phase_m) const;
   // Share of pair `index` (position in segments()[segment].pairs) of the mesh force: its
-  // stiffness over the sum (equal deflection of parallel pairs) [-].
+  // stiffness over the sum (equal deflection of parallel pairs; 0 for a corner pair) [-].
   double PairShare(int segment, int index, double phase_m) const;
   // Share of the pair at s in [0, g_alpha]; `left` takes the limit from below at a switch.
   double ShareAt(double s_m, bool left) const;
@@ -76,6 +87,15 @@ class TorsionalMesh {
   // force F at the instant the pair at s sees [m]. Without relief: k_mesh x, k_i / k_mesh
   // and F / k_mesh.
   const TipRelief& relief() const { return relief_; }
+  // Corner contact: on, and how far before A and after E pairs may touch [m].
+  bool corner_contact() const { return corner_before_m_ > 0 || corner_after_m_ > 0; }
+  double corner_before_m() const { return corner_before_m_; }
+  double corner_after_m() const { return corner_after_m_; }
+  // The separation the pair at s must close before it carries load: the relief gap on
+  // [0, g_alpha], the corner separation (plus the relief at the tip) outside [m].
+  double GapAt(double s_m) const;
+  // Whether the force needs the pair-by-pair sum (relief or corner contact).
+  bool gapped() const { return relief_.Active() || corner_contact(); }
   double ElasticForce(int segment, double phase_m, double x_m) const;
   double PairShare(int segment, int index, double phase_m, double x_m) const;
   double ShareAt(double s_m, bool left, double x_m) const;
@@ -102,6 +122,8 @@ class TorsionalMesh {
   std::vector<double> nodes_m_, values_n_per_m_, weights_;  // Chebyshev-Lobatto interpolant
   std::vector<MeshSegment> segments_;
   TipRelief relief_;
+  std::optional<CornerContact> corner_;
+  double corner_before_m_ = 0, corner_after_m_ = 0;
   double mean_n_per_m_ = 0, min_n_per_m_ = 0, max_n_per_m_ = 0;
 };
 

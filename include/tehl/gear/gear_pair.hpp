@@ -71,9 +71,10 @@ struct FlankGeometry {
   // negative (the rack cuts below the base circle); the root radius for a ring (shaper-cut,
   // not modelled). [m]
   double form_radius_m = 0;
-  // Smallest shift without undercut, x_min = h_aP* - z sin^2(alpha_t) / (2 cos(beta))
-  // (Mabie & Reinholtz; seed 000 Table 4.9: 18 teeth at 20 deg full depth). For the ISO 53
-  // rack (h_fP = 1.25, rho_fP = 0.38) it equals the rack's straight-flank limit. -inf for a
+  // Smallest shift without undercut, x_min = h_F0 - z sin^2(alpha_t) / (2 cos(beta)), h_F0 =
+  // h_fP - rho_fP (1 - sin alpha_n) where the rack's straight flank ends. For the ISO 53 rack
+  // (h_fP = 1.25, rho_fP = 0.38, h_F0 = 0.99997) it is the textbook rule with h_aP* = 1
+  // (Mabie & Reinholtz; seed 000 Table 4.9: 18 teeth at 20 deg full depth). -inf for a
   // ring. [-]
   double min_shift_no_undercut = 0;
   bool undercut = false;  // x < x_min

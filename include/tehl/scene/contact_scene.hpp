@@ -56,6 +56,9 @@ struct ContactRunResult {
   double x_end_m = 0;       // the grid's last node [m]
   int grid_points = 0;      // nodes of the grid the film was solved on [-]
   std::string grid_rule;    // how that node count was chosen
+  // Notes on the inputs found before solving: a waviness on too few cells of the grid, an
+  // inlet far from the lubricant law's reference temperature (case --check prints them too).
+  std::vector<std::string> input_notes;
   double inlet_temperature_k = 0;  // T0 of the oil and the bulk of both bodies [K]
   bool finite_peclet = false;      // effects.finite_peclet of the case
   bool thermal = false;            // effects.thermal of the case

@@ -84,6 +84,9 @@ struct MeshCycleResult {
   int planned_steps = 0;                        // steps from A to E [-]
   std::string step_rule;                        // how the step count was chosen
   std::string grid_rule;                        // how the node count was chosen
+  // Notes on the inputs found before solving: a waviness on too few cells of the grid, an
+  // inlet far from the lubricant law's reference temperature (case --check prints them too).
+  std::vector<std::string> input_notes;
   double wall_time_s = 0;                       // whole run [s]
   std::string hdf5_path, csv_path;              // written files ("" when not written)
   int resumed_from_step = 0;                    // first step solved by this run when resumed

@@ -182,5 +182,52 @@ TEST(CommandLineErrors, AStoppedRunMarksItsUnconvergedRowInTheCycleCsv) {
   EXPECT_EQ(at("steady_restart"), 0.0) << last;
 }
 
+// A waviness spanning few cells of the grid: `case --check` says how many and the grid that
+// resolves it (15 cells per wave, docs/studies.md "Roughness grid"). The seed 004 pair in the
+// default steel on 129 nodes over -4.5 .. 1.5 b_max (b_max = 109.4 um: dx = 5.13 um) with
+// 50 um waves: 9.7 cells; 257 nodes give 19.5 (twice as many).
+TEST(CommandLineErrors, AWavinessOnTooFewCellsIsNotedWithTheGridThatResolvesIt) {
+  const std::string path = testing::UniqueTempPath("wavy.toml");
+  const std::string waves =
+      "[effects]\nroughness = true\n"
+      "[surfaces.surface1]\nroughness = \"sinusoidal\"\namplitude_m = 1e-7\nwavelength_m = 5e-5\n"
+      "[numerics]\ngrid_points = 129\n";
+  std::ofstream(path) << GearCase("pinion_speed_rpm = 1000.0", waves);
+  const testing::RunResult r = testing::RunTehl("case --check '" + path + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("the waviness of surface1 (50 um) spans 9.7 cells"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("grid_points = 257 gives 19"), std::string::npos) << r.out;
+  std::string fine = testing::ReadAll(path);
+  fine.replace(fine.find("grid_points = 129"), 17, "grid_points = 257");
+  std::ofstream(path) << fine;
+  const testing::RunResult ok = testing::RunTehl("case --check '" + path + "'");
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_EQ(ok.out.find("waviness"), std::string::npos) << ok.out;
+}
+
+// A step count below one per contact zone is raised, and the plan says so.
+TEST(CommandLineErrors, AStepCountBelowTheZonesIsRaisedAndSaidSo) {
+  const std::string path = testing::UniqueTempPath("one_step.toml");
+  std::ofstream(path) << GearCase("pinion_speed_rpm = 1000.0", "[numerics]\nsteps = 1\n");
+  const testing::RunResult r = testing::RunTehl("case --check '" + path + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("mesh cycle of 3 steps ([numerics] steps = 1, raised to 3"),
+            std::string::npos)
+      << r.out;
+}
+
+// A Newton tolerance below what rounding allows is bad input (it used to run and fail with a
+// message about the grid).
+TEST(CommandLineErrors, ANewtonToleranceBelowRoundingIsRefused) {
+  const std::string path = testing::UniqueTempPath("tol.toml");
+  std::ofstream(path) << GearCase("pinion_speed_rpm = 1000.0",
+                                  "[numerics]\nnewton_tolerance = 1e-300\n");
+  const testing::RunResult r = testing::RunTehl("case --check '" + path + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("numerics.newton_tolerance = 1e-300"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("1e-14"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace tehl

@@ -399,5 +399,28 @@ TEST(RunNotes, AShortInletOfANearlyIsoviscousDiscIsNoted) {
   EXPECT_EQ(d.out.find("nearly isoviscous"), std::string::npos) << d.out;
 }
 
+// An isothermal Newtonian film in sliding (steel discs R1 = R2 = 20 mm, w = 355.2 kN/m,
+// u1 = 3, u2 = 1 m/s, SAE 40) has mu far above the 0.2 that lubricants' limiting shear
+// stress allows (the friction note): the report says the mu is not physical and gives no
+// flash temperature from it, instead of headlining one.
+TEST(RunNotes, AnUnphysicalNewtonianMuGivesNoFlashTemperature) {
+  const std::string dir = UniqueTempPath("out");
+  const std::string path = UniqueTempPath("sliding.toml");
+  std::ofstream(path) << "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\n"
+                         "speed_1_m_s = 3.0\nspeed_2_m_s = 1.0\nload_n_per_m = 355200.0\n"
+                         "[lubricant]\nname = \"sae40\"\n[effects]\ntransient = false\n"
+                         "[numerics]\ngrid_points = 257\n[output]\ndirectory = \""
+                      << dir << "\"\n";
+  const RunResult r = RunTehl("run -q '" + path + "'");
+  ASSERT_TRUE(r.exited);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("not physical: note below); no flash temperature from it"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("flash temperature (Blok"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("note: the Newtonian film's friction coefficient"), std::string::npos)
+      << r.out;
+}
+
 }  // namespace
 }  // namespace tehl::testing

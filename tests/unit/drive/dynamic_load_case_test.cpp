@@ -81,7 +81,8 @@ TEST(DynamicsCase, BacklashOfAWiderCentreDistanceIsAlongTheLineOfAction) {
 
 TEST(DynamicLoadEffect, CycleRowsCarryTheDynamicLoadAtTheCaseSpeed) {
   // Same case with and without the effect: every row's w is the static w times F/F_s of the
-  // periodic response at that s, and at 1000 rpm (near f_n/8) w differs by more than 20 %
+  // periodic response at that s, and at 1000 rpm (near f_n/8; dynamic load factor 1.14 with
+  // corner contact, docs/dynamics.md) w differs by more than 5 %
   // somewhere.
   const std::string text = CaseText("seed004_sae40_dynamic");
   const internal::GearCase dyn = Read(WriteCase(text, "on"));
@@ -99,7 +100,7 @@ TEST(DynamicLoadEffect, CycleRowsCarryTheDynamicLoadAtTheCaseSpeed) {
     EXPECT_GT(rd[i].load_n_per_m, 0.0);
     largest = std::max(largest, std::abs(rd[i].load_n_per_m / rs[i].load_n_per_m - 1));
   }
-  EXPECT_GT(largest, 0.2);
+  EXPECT_GT(largest, 0.05);
 }
 
 TEST(DynamicLoadEffect, AtVeryLowSpeedTheCycleLoadIsTheStaticLoad) {

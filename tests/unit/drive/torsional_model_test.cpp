@@ -40,6 +40,26 @@ TEST(TorsionalModel, MeshFrequencyOfTheSeed000PairAt1000Rpm) {
               1e-9);
 }
 
+TEST(TorsionalModel, FlanksInContactPushAndNeverPull) {
+  // A contact force is compressive: k x + c x' on the drive flanks (x > 0) when that is
+  // positive, and 0 while the flanks part faster than the teeth spring back (c x' < -k x);
+  // on the back flanks the mirror image. Seed 000 eqs. 4.37-4.42 give k x + c x' with the
+  // contact state set by x alone, which would let the damper pull the flanks together.
+  testing::Seed000Dynamics d;
+  d.params.damping_ratio = 0.1;
+  const TorsionalModel m(*d.mesh, d.params);
+  const double c = m.damping_n_s_per_m(), k = d.mesh->MeshStiffness(0, 0.0);
+  const double x = 1e-6, v_pull = -2.0 * k * x / c;
+  EXPECT_GT(m.MeshForce(ContactState::kDriveFlank, 0, 0.0, x, 0.0), 0.0);
+  EXPECT_EQ(m.MeshForce(ContactState::kDriveFlank, 0, 0.0, x, v_pull), 0.0);
+  const double xb = -(d.params.backlash_m + x);
+  EXPECT_LT(m.MeshForce(ContactState::kBackFlank, 0, 0.0, xb, 0.0), 0.0);
+  EXPECT_EQ(m.MeshForce(ContactState::kBackFlank, 0, 0.0, xb, -v_pull), 0.0);
+  // Closing flanks: the damper adds to the spring.
+  EXPECT_NEAR(m.MeshForce(ContactState::kDriveFlank, 0, 0.0, x, 1e-3), k * x + c * 1e-3,
+              1e-9 * (k * x + c * 1e-3));
+}
+
 TEST(TorsionalParameters, RejectsEachInvalidValue) {
   testing::Seed000Dynamics d;
   EXPECT_TRUE(d.params.Validate().empty());

@@ -213,16 +213,17 @@ TEST_F(GearCommand, ProfileCsvListsBothGears) {
     EXPECT_NE(text.find(s), std::string::npos) << s;
 }
 
-// Asymmetric teeth have one undercut limit per flank, x_min = h_a* - z sin^2(alpha) / 2
-// (Mabie & Reinholtz): for the 35-tooth pinion of cases/asymmetric_35_20.toml 1 - 35
-// sin^2(35 deg) / 2 = -4.7573 on the drive flank and 1 - 35 sin^2(20 deg) / 2 = -1.0471 on the
-// coast flank, which governs.
+// Asymmetric teeth have one undercut limit per flank, x_min = h_F0 - z sin^2(alpha) / 2 with
+// h_F0 = h_fP - rho_fP (1 - sin alpha) where the rack's straight flank of that side ends
+// (docs/gear.md): for the 35-tooth pinion of cases/asymmetric_35_20.toml (h_fP = 1.25,
+// rho_fP = 0.15) 1.18604 - 35 sin^2(35 deg) / 2 = -4.5713 on the drive flank and 1.15130 - 35
+// sin^2(20 deg) / 2 = -0.8958 on the coast flank, which governs.
 TEST_F(GearCommand, AsymmetricReportGivesTheUndercutLimitOfEachFlank) {
   const Result r = Tehl("gear cases/asymmetric_35_20.toml");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto limit = [](double deg) {
     const double s = std::sin(deg * M_PI / 180);
-    return 1.0 - 35 * s * s / 2;
+    return 1.25 - 0.15 * (1 - s) - 35 * s * s / 2;
   };
   char drive[32], coast[32];
   std::snprintf(drive, sizeof drive, "%.4f", limit(35.0));
@@ -254,11 +255,12 @@ TEST_F(GearCommand, UndercutPinionExitsTwoSayingWhatToChange) {
   std::ofstream(p) << text;
   const Result r = Tehl("gear " + p.string());
   EXPECT_EQ(r.code, 2);
-  // x_min = 1 - 14 sin^2(20)/2 = 0.18115 (seed 000 Table 4.9 rule); line 6 holds the shift.
+  // x_min = h_F0 - 14 sin^2(20)/2 = 0.99997 - 0.81884 = 0.18112 (ISO 53 rack: h_F0 = 1.25 -
+  // 0.38 (1 - sin 20 deg)); line 6 holds the shift.
   EXPECT_NE(r.err.find(p.string() + ":6: gear.pinion.profile_shift = 0.0: the pinion is undercut"),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("profile_shift >= 0.1812"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("profile_shift >= 0.1811"), std::string::npos) << r.err;
 }
 
 TEST_F(GearCommand, PointedToothExitsTwo) {

@@ -111,6 +111,12 @@ TEST(GearPair, UndercutLimitReproducesMinimumTeethTable) {
   // Seed 000 Table 4.9 (Mabie & Reinholtz): least teeth without undercut against a rack:
   // 14.5 deg full depth 32, 20 deg full depth 18, 20 deg stub 14, 25 deg full depth 12.
   // Rack proportions of seed 000 Tables 4.1-4.2 (addendum a, dedendum b, fillet r_f, x 1/P).
+  // The table's rule takes the addendum a for the depth where the rack's straight flank
+  // ends; with these racks that depth, h_F0 = b - r_f (1 - sin phi), is 1.0003, 1.0526,
+  // 0.8000 and 1.0768, so z_min = 2 h_F0 / sin^2(phi) = 31.9, 18.0, 13.7 and 12.06: the table
+  // for the first three, and 13 at 25 deg, where 12 teeth are undercut by 0.005 modules (the
+  // table's a = 1 gives 11.2). With the ISO 53 rack (h_fP = 1.25, rho_fP = 0.38) 25 deg
+  // gives h_F0 = 1.0306 and 11.5: 12, the table.
   struct Row {
     double deg, addendum, dedendum, fillet;
     int z_min;
@@ -118,7 +124,8 @@ TEST(GearPair, UndercutLimitReproducesMinimumTeethTable) {
   const Row rows[] = {{14.5, 1.0, 1.157, 0.209, 32},
                       {20, 1.0, 1.25, 0.300, 18},
                       {20, 0.8, 1.0, 0.304, 14},
-                      {25, 1.0, 1.25, 0.300, 12}};
+                      {25, 1.0, 1.25, 0.300, 13},
+                      {25, 1.0, 1.25, 0.380, 12}};
   for (const Row& r : rows) {
     auto undercut = [&](int z) {
       GearPairSpec s = Seed004Spec();
@@ -132,6 +139,33 @@ TEST(GearPair, UndercutLimitReproducesMinimumTeethTable) {
     EXPECT_FALSE(undercut(r.z_min)) << r.deg << " deg, z = " << r.z_min;
     EXPECT_TRUE(undercut(r.z_min - 1)) << r.deg << " deg, z = " << r.z_min - 1;
   }
+}
+
+TEST(GearPair, UndercutFollowsTheToolsStraightFlank) {
+  // z = 18, x = 0, 20 deg, h_fP = 1.25. A rack with tip radius rho_fP = 0.1 ends its
+  // straight flank at h_F0 = 1.25 - 0.1 (1 - sin 20 deg) = 1.18420 below the reference line,
+  // beyond the interference point (r sin^2(alpha) / m = 9 sin^2 20 deg = 1.05280): undercut,
+  // x_min = 1.18420 - 1.05280 = 0.13140. A sharp tool (rho_fP = 0) at z = 17: x_min = 1.25 -
+  // 17 sin^2(20 deg) / 2 = 0.25569, so x = 0.05 is undercut. The ISO 53 rack (rho_fP = 0.38)
+  // keeps z = 18, x = 0 free of undercut (x_min = -0.05285).
+  auto pinion = [](int z, double x, double rho) {
+    GearPairSpec s = Seed004Spec();
+    s.pinion.teeth = z;
+    s.pinion.profile_shift = x;
+    s.dedendum_coefficient = 1.25;
+    s.root_fillet_coefficient = rho;
+    return GearPair(s).pinion().drive;
+  };
+  const double sin2 = std::pow(std::sin(DegToRad(20.0)), 2);
+  const FlankGeometry blunt = pinion(18, 0.0, 0.1);
+  EXPECT_NEAR(blunt.min_shift_no_undercut, 1.25 - 0.1 * (1 - std::sin(DegToRad(20))) - 9 * sin2,
+              1e-14);
+  EXPECT_NEAR(blunt.min_shift_no_undercut, 0.13140, 5e-6);
+  EXPECT_TRUE(blunt.undercut);
+  const FlankGeometry sharp = pinion(17, 0.05, 0.0);
+  EXPECT_NEAR(sharp.min_shift_no_undercut, 0.25569, 5e-6);
+  EXPECT_TRUE(sharp.undercut);
+  EXPECT_FALSE(pinion(18, 0.0, 0.38).undercut);
 }
 
 TEST(GearPair, ThicknessAtRadiusFollowsSeed000Eq213) {

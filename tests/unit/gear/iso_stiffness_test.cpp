@@ -59,6 +59,23 @@ TEST(IsoMethodB, FzgTypeC) {
   EXPECT_NEAR(iso.c_gamma_alpha_n_per_mm_um, 16.57, 0.006);
 }
 
+TEST(IsoMethodB, TheSmallerGearIsGearOneWhicheverDrives) {
+  // ISO 6336-1 numbers the smaller gear 1 in q' (C2/zn1, C4..C5 with x1). A speed-increasing
+  // pair (60 teeth driving 20) is the same mesh as the reducer: the same c'. By hand for
+  // x = 0: q' = 0.04723 + 0.15551/20 + 0.25791/60 = 0.059304 mm um/N, c'_th = 16.862,
+  // c' = 0.8 * 0.975 * c'_th = 13.15 N/(mm um) (C_M = 0.8, C_R = 1, C_B = 0.975).
+  const ToothBlank small = Blank(20, 0.003, 0.2, 0.0336);
+  const ToothBlank large = Blank(60, 0.003, -0.1, 0.0927);
+  const IsoStiffness reducer = IsoMethodB(small, large, 1.6);
+  const IsoStiffness increaser = IsoMethodB(large, small, 1.6);
+  EXPECT_NEAR(increaser.q_prime_mm_um_per_n, reducer.q_prime_mm_um_per_n, 1e-15);
+  ToothBlank s0 = small, l0 = large;
+  s0.profile_shift = l0.profile_shift = 0.0;
+  EXPECT_NEAR(IsoMethodB(l0, s0, 1.6).q_prime_mm_um_per_n, 0.04723 + 0.15551 / 20 + 0.25791 / 60,
+              1e-12);
+  EXPECT_NEAR(IsoMethodB(l0, s0, 1.6).c_prime_n_per_mm_um, 13.15, 0.005);
+}
+
 TEST(IsoMethodB, BasicRackFactorFollowsTheRack) {
   // ISO 6336-1: C_B = [1 + 0.5 (1.2 - h_fP/m)] [1 - 0.02 (20 deg - alpha_n)].
   // h_fP = 1.25 m, 20 deg: C_B = 0.975. h_fP = 1.2 m, 25 deg: C_B = 1 * 1.1 = 1.1, and

@@ -106,6 +106,30 @@ TEST(LubricantFile, ViscosityBelowTheRoelandsLimitIsReportedAtItsLine) {
   EXPECT_TRUE(Has(p, "lub.toml:13: viscosity.viscosity_pa_s = 1e-05", "eta_inf")) << p[0];
 }
 
+TEST(LubricantFile, ViscosityInTheWrongUnitIsReportedAtItsLine) {
+  // 320 cSt written as m^2/s (3.2e-4) is below water's 0.00089 Pa s; 320 mPa s written as
+  // Pa s is above the 100 Pa s no oil reaches from 0 C up (ISO VG 3200: about 3 Pa s at
+  // 40 C). Both are exit 2 with the conversion named.
+  const std::string law =
+      "[viscosity]\n"            // 11
+      "model = \"constant\"\n";  // 12
+  const auto kinematic = Problems(std::string(kHead) + law + "viscosity_pa_s = 3.2e-4\n");
+  ASSERT_EQ(kinematic.size(), 1u) << ::testing::PrintToString(kinematic);
+  EXPECT_TRUE(Has(kinematic, "lub.toml:13: viscosity.viscosity_pa_s = 0.00032", "kinematic"))
+      << kinematic[0];
+  const auto milli = Problems(std::string(kHead) + law + "viscosity_pa_s = 320.0\n");
+  ASSERT_EQ(milli.size(), 1u) << ::testing::PrintToString(milli);
+  EXPECT_TRUE(Has(milli, "lub.toml:13: viscosity.viscosity_pa_s = 320", "in mPa s?")) << milli[0];
+  // The lightest and heaviest plausible oils load; a cold reference keeps the wider range.
+  for (const char* eta : {"0.0005", "100.0"})
+    EXPECT_NO_THROW(Lubricant::FromString(
+        std::string(kHead) + law + "viscosity_pa_s = " + eta + "\n", "lub.toml"))
+        << eta;
+  std::string cold = std::string(kHead) + law + "viscosity_pa_s = 320.0\n";
+  cold.replace(cold.find("313.15"), 6, "233.15");
+  EXPECT_NO_THROW(Lubricant::FromString(cold, "lub.toml"));
+}
+
 TEST(LubricantFile, EveryProblemIsReportedAtOnce) {
   const std::string text =
       "name = \"oil\"\n"                               // 1
