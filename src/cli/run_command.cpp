@@ -98,6 +98,9 @@ int RunGear(const RunArgs& a) {
   NoteRestarts(r.steps, [](size_t k, const MeshCycleStep& s) {
     return Where("step %zu (s = %.4g mm)", k, s.s_m * 1e3);
   });
+  NoteSplitSteps(r.steps, r.time_tolerance, [](size_t k, const MeshCycleStep& s) {
+    return Where("step %zu (s = %.4g mm)", k, s.s_m * 1e3);
+  });
   NoteTimeError(r.steps, [](size_t k, const MeshCycleStep& s) {
     return Where("step %zu (s = %.4g mm)", k, s.s_m * 1e3);
   });
@@ -166,6 +169,9 @@ int RunContact(const RunArgs& a) {
   });
   NoteRestarts(r.steps, [](size_t k, const ContactStepRecord& s) {
     return Where("step %zu (t = %.4g s)", k, s.time_s);
+  });
+  NoteSplitSteps(r.steps, r.time_tolerance, [](size_t k, const ContactStepRecord& s) {
+    return Where("step %zu, t = %.4g s", k, s.time_s);
   });
   NoteTimeError(r.steps, [](size_t k, const ContactStepRecord& s) {
     return Where("step %zu (t = %.4g s)", k, s.time_s);

@@ -138,6 +138,28 @@ void NoteTimeError(const std::vector<Step>& steps, Where where) {
       where(worst, steps[worst]).c_str());
 }
 
+// Steps split into substeps without time control: a whole step whose Newton solve did not
+// converge (max_newton_iterations) is retried as 2 and then 4 substeps (docs/theory.md,
+// "Time-step control"). The shorter steps change that film and the ones after it by the time
+// error, so a run with a lower iteration limit is not the same run.
+template <typename Step, typename Where>
+void NoteSplitSteps(const std::vector<Step>& steps, double time_tolerance, Where where) {
+  if (time_tolerance > 0) return;  // splitting is what time control does
+  size_t count = 0, first = 0;
+  for (size_t k = 0; k < steps.size(); ++k) {
+    if (!steps[k].summary.usable() || steps[k].summary.substeps <= 1) continue;
+    if (count++ == 0) first = k;
+  }
+  if (count == 0) return;
+  std::printf(
+      "note: %zu time step%s did not converge as one step and %s split into substeps (first at "
+      "%s): those films and the ones after them differ from whole steps by the time error; "
+      "more [numerics] max_newton_iterations keeps the steps whole, and time_tolerance "
+      "controls the error (docs/case_format.md)\n",
+      count, count == 1 ? "" : "s", count == 1 ? "was" : "were",
+      where(first, steps[first]).c_str());
+}
+
 // The converged steps of a run's step list.
 template <typename Step>
 size_t UsableCount(const std::vector<Step>& steps) {

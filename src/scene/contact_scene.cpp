@@ -83,6 +83,7 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   result.inlet_temperature_k = film.inlet_temperature_k;
   result.finite_peclet = film.effects.finite_peclet;
   result.thermal = film.effects.thermal;
+  result.time_tolerance = film.options.time_tolerance;
   result.non_newtonian = film.effects.non_newtonian;
   result.solids = film.solids;
   FilmState state;

@@ -241,6 +241,7 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   r.inlet_viscosity_pa_s = inlet.eta_pa_s;
   r.pressure_viscosity_per_pa = film.effects.piezoviscous ? inlet.deta_dp / inlet.eta_pa_s : 0.0;
   r.thermal = film.effects.thermal;
+  r.time_tolerance = film.options.time_tolerance;
   r.non_newtonian = film.effects.non_newtonian;
   r.finite_peclet = film.effects.finite_peclet;
   r.film_nodes = film.options.film_nodes;

@@ -62,6 +62,7 @@ struct ContactRunResult {
   double inlet_temperature_k = 0;  // T0 of the oil and the bulk of both bodies [K]
   bool finite_peclet = false;      // effects.finite_peclet of the case
   bool thermal = false;            // effects.thermal of the case
+  double time_tolerance = 0;       // [numerics] time_tolerance of the case (0: no time control) [-]
   bool non_newtonian = false;      // effects.non_newtonian of the case
   ContactSolids solids;            // thermal properties of bodies 1 and 2
   bool converged() const;   // every step usable

@@ -67,6 +67,7 @@ struct MeshCycleResult {
   std::vector<double> x_m;                      // grid nodes [m]
   std::vector<std::vector<double>> p_pa, h_m;   // profiles per step over x [Pa], [m]
   bool thermal = false;                         // effects.thermal of the case
+  double time_tolerance = 0;  // [numerics] time_tolerance of the case (0: no time control) [-]
   bool finite_peclet = false;                   // effects.finite_peclet of the case
   bool non_newtonian = false;                   // effects.non_newtonian of the case
   int film_nodes = 0;                           // nodes across the film (thermal) [-]

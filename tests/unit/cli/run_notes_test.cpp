@@ -422,5 +422,53 @@ TEST(RunNotes, AnUnphysicalNewtonianMuGivesNoFlashTemperature) {
       << r.out;
 }
 
+// A Newton iteration limit below what a step needs splits that step into substeps (the
+// retry of LineContactSolver::Step), which changes the films by the time error: the run
+// says so. Seed 004, thermal with the Ree-Eyring film, 257 nodes, 80 steps and at most 8
+// Newton iterations: step 37 (s = 4.83 mm, just after B, where the load jumps) is split.
+TEST(RunNotes, StepsSplitByTheNewtonLimitAreNoted) {
+  std::ifstream in(std::string(TEHL_SOURCE_DIR) + "/cases/seed004_sae40.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto at = text.find("grid_points = 513");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 17, "grid_points = 257\nsteps = 80\nmax_newton_iterations = 8");
+  const auto th = text.find("thermal = true");
+  ASSERT_NE(th, std::string::npos);
+  text.replace(th, 14, "thermal = true\nnon_newtonian = true");
+  const std::string dir = UniqueTempPath("out"), path = UniqueTempPath("split.toml");
+  std::ofstream(path) << text << "[output]\ndirectory = \"" << dir << "\"\n";
+  const RunResult r = RunTehl("run -q '" + path + "'");
+  ASSERT_TRUE(r.exited);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("did not converge as one step and was split into substeps"),
+            std::string::npos)
+      << r.out;
+  // With the default limit (100) the steps stay whole and nothing is noted.
+  text.replace(text.find("max_newton_iterations = 8"), 25, "max_newton_iterations = 100");
+  std::ofstream(path) << text << "[output]\ndirectory = \"" << dir << "\"\n";
+  const RunResult whole = RunTehl("run -q '" + path + "'");
+  ASSERT_EQ(whole.exit_code, 0) << whole.out << whole.err;
+  EXPECT_EQ(whole.out.find("split into substeps"), std::string::npos) << whole.out;
+}
+
+// An inlet 50 K above the lubricant's reference temperature takes its roelands_gamma law
+// beyond where one gamma describes the oil: `case --check` and the run say so; 20 K does not.
+TEST(RunNotes, AnInletFarFromTheGammaLawsReferenceIsNoted) {
+  for (const char* t : {"363.15", "333.15"}) {
+    std::ifstream in(std::string(TEHL_SOURCE_DIR) + "/cases/seed004_sae40.toml");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto at = text.find("inlet_temperature_k = 313.15");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 28, std::string("inlet_temperature_k = ") + t);
+    const std::string path = UniqueTempPath("hot.toml");
+    std::ofstream(path) << text;
+    const RunResult r = RunTehl("case --check '" + path + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    const bool noted =
+        r.out.find("is 50 K above the lubricant's reference temperature") != std::string::npos;
+    EXPECT_EQ(noted, std::string(t) == "363.15") << r.out;
+  }
+}
+
 }  // namespace
 }  // namespace tehl::testing
