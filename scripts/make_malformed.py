@@ -353,9 +353,9 @@ def _():
 def _():
     c = Case(G)
     c.add("gear", "addendum_coefficient", "0.5")
-    return c, "gear.pressure_angle_deg", line_of(c.key("gear", "pressure_angle_deg")), \
+    return c, "gear.addendum_coefficient", line_of(c.key("gear", "addendum_coefficient")), \
         "half-height teeth (addendum 0.5 m): the contact ratio drops below 1 (reported at " \
-        "the drive pressure angle)"
+        "the short addendum)"
 
 
 @mutation("gear_tip_relief_without_length")

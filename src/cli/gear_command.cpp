@@ -125,8 +125,17 @@ void Path(std::ostream& o, const internal::GearCase& c) {
     << mm(l.d_m) << "  E " << mm(l.e_m) << "\n";
   o << "  from A  [mm]:  AB " << mm(path.s_b_m()) << "  AC " << mm(path.s_c_m()) << "  AD "
     << mm(path.s_d_m()) << "  AE " << mm(path.length_m()) << " (g_alpha)\n";
-  o << "  single contact B-D " << mm(std::max(0.0, path.s_d_m() - path.s_b_m()))
-    << " mm; mesh period " << Fmt("%.4f", path.mesh_period_s() * 1e3) << " ms, A to E "
+  // B = E - p_b and D = A + p_b; with eps_alpha >= 2 there is no single contact: B lies after
+  // D, and two or three pairs share the load everywhere.
+  const double eps = path.contact_ratio();
+  if (eps < 2.0)
+    o << "  single contact B-D " << mm(std::max(0.0, path.s_d_m() - path.s_b_m())) << " mm";
+  else
+    o << "  no single contact (eps_alpha = " << Fmt("%.4f", eps)
+      << " >= 2: " << (eps < 3.0 ? "two or three" : "three or more")
+      << " pairs in contact at every instant; "
+      << "B = E - p_b and D = A + p_b mark where a third pair enters and leaves)";
+  o << "; mesh period " << Fmt("%.4f", path.mesh_period_s() * 1e3) << " ms, A to E "
     << Fmt("%.4f", path.duration_s() * 1e3) << " ms\n";
 
   const ToothLoad load = NominalToothLoad(p, c.operating);
@@ -165,6 +174,11 @@ void Stiffness(std::ostream& o, const internal::GearCase& c) {
   o << head;
   for (const char* method : {"potential_energy", "kuang_yang"}) {
     std::shared_ptr<const PairStiffnessModel> owner;
+    if (p.spec().helix_angle_rad > 0) {  // as the case reader refuses them (gear_case.cpp)
+      o << "  " << method << ": not applicable: a spur-tooth model (helix_angle_deg = "
+        << Fmt("%.4g", RadToDeg(p.spec().helix_angle_rad)) << "; iso below is for helical pairs)\n";
+      continue;
+    }
     try {
       const PairStiffnessFn k = internal::MakePairStiffness(p, method, &owner);
       const MeshStiffnessSummary m = SummarizeMeshStiffness(path, k);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "base/schema.hpp"
 #include "tehl/error.hpp"
 #include "tehl/gear/load_sharing.hpp"
 #include "tehl/gear/operating_point.hpp"
@@ -16,6 +17,15 @@ DynamicsCase ReadDynamicsCase(Document& doc, const GearCase& c) {
   DynamicsCase d;
   TorsionalParameters& p = d.params;
   const GearPair& pair = *c.pair;
+  // The torsional model meshes spur pairs: a pair enters along its whole face at A. Helical
+  // contact lines enter gradually over the face (eps_beta), which smooths k(t) in a way the
+  // model does not describe.
+  if (pair.spec().helix_angle_rad > 0)
+    doc.Problem("gear", "helix_angle_deg",
+                "the torsional dynamics mesh spur teeth (each pair enters along its whole face "
+                "at A); a helical pair's contact lines enter over the face (eps_beta = " +
+                    FormatShort(pair.face_contact_ratio()) + "), which it does not model",
+                "helix_angle_deg = 0 for tehl dynamics and [effects] dynamic_load");
   p.pinion_speed_rad_s = c.operating.pinion_speed_rad_s;
   p.pinion_torque_nm = c.operating.pinion_torque_nm;
   p.damping_ratio = doc.Real("dynamics", "damping_ratio");
