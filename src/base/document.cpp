@@ -15,6 +15,8 @@
 namespace tehl::internal {
 namespace {
 
+
+
 std::string JoinNames(const std::vector<std::string>& names) {
   std::string s;
   for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
@@ -147,7 +149,9 @@ class DocumentReader {
           std::vector<std::string> known;
           if (spec)
             for (const auto& kk : spec->keys) known.push_back(kk.name);
-          Add(vline, full, ShowToml(v), "unknown key",
+          const std::string near = NearestName(key, known);
+          Add(vline, full, ShowToml(v),
+              near.empty() ? std::string("unknown key") : "unknown key (did you mean " + near + "?)",
               (name.empty() ? std::string("top-level keys: ") : "keys of [" + name + "]: ") +
                   JoinNames(known));
         }

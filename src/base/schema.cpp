@@ -2,6 +2,7 @@
 // number formatting (schema.hpp; reading a file against a schema is document.cpp).
 #include "base/schema.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -50,6 +51,37 @@ std::string AllowedText(const KeySpec& k) {
   const std::string r = RangeText(k);
   if (!r.empty()) s += " " + r;
   return s + UnitSuffix(k.unit);
+}
+
+// The known name within two edits (insertions, deletions, substitutions) of `name`, the
+// closest first; "" when none is that close or the name is short enough for two edits to
+// reach anything.
+std::string NearestName(const std::string& name, const std::vector<std::string>& known) {
+  if (name.size() < 4) return "";
+  auto distance = [](const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+      size_t diag = row[0];
+      row[0] = i;
+      for (size_t j = 1; j <= b.size(); ++j) {
+        const size_t up = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        diag = up;
+      }
+    }
+    return row[b.size()];
+  };
+  std::string best;
+  size_t best_d = 3;
+  for (const std::string& k : known) {
+    const size_t d = distance(name, k);
+    if (d < best_d) {
+      best_d = d;
+      best = k;
+    }
+  }
+  return best;
 }
 
 std::string FormatShort(double x) {
