@@ -14,11 +14,19 @@ own process, N at a time):
   - the cost of each effect on the cycle (129 nodes, 80 steps): isothermal, rigid, steady,
     rough, Ree-Eyring against the thermal elastic transient smooth Newtonian base.
 The error of each quantity is relative to the finest converged run of its series (the
-reference); for
-the grid series the observed order and a Richardson estimate of the reference's own error are
-given from the three finest grids. Times: the result file's wall time (the HDF5 wall_time of
-a mesh cycle, the sum of the wall_time_s column of a disc's _steps.csv) and the CPU time (user + system) of the process from wait4; on a loaded machine the CPU time is the
-stable measure, so the Pareto plot and the relative costs use it.
+reference); for the grid series the observed order and a Richardson estimate of the
+reference's own error are given from the three finest grids. The steps series is instead
+compared with the controlled-step film (the time_tolerance of the time_tol series' finest
+run) at the same step count (CONTROLLED_REFERENCE), so that both sample the cycle at the same
+step ends. h_c is the central film interpolated linearly to the pitch point C between the two
+steps around it.
+Times: every run reads its FFTW plans from a wisdom file (TEHL_FFTW_WISDOM) warmed before the
+measured runs, one grid size at a time, so that no run counts the one-off FFTW planning of its
+grid size (reported separately); the CPU time (user + system) of each process from wait4, less
+the start-up of the binary (the least CPU time of `tehl --version`), is
+the time of the table and of the relative costs. The result file's wall time is shown beside
+it (the HDF5 wall_time of a mesh cycle: the whole run; the sum of the wall_time_s column of a
+disc's _steps.csv: the solve).
 --reuse reads results of an earlier run from the scratch folder instead of running again.
 """
 import argparse
@@ -44,6 +52,7 @@ QUANTITIES = [("h_min", "h_min"), ("h_c", "h_c"), ("p_max", "p_max"), ("T_max", 
               ("mu", "mu")]
 
 CYCLE_BASE = {"effects.thermal": "true", "effects.non_newtonian": "true",
+              "effects.transient": "true",
               "numerics.grid_points": "257",
               "numerics.film_nodes": "11", "numerics.steps": "80",
               "numerics.newton_tolerance": "1e-8", "numerics.x_start_b": "-4.5",
@@ -70,7 +79,7 @@ INLET = ("inlet", "numerics.x_start_b", ["-3", "-4.5", "-6", "-8", "-12", "-16"]
 SERIES = {
     "cycle": [("N", "numerics.grid_points", ["129", "257", "513", "1025"]),
               ("Nz", "numerics.film_nodes", ["5", "7", "11", "21"]),
-              ("steps", "numerics.steps", ["40", "80", "150", "300"]),
+              ("steps", "numerics.steps", ["40", "80", "150", "300", "640"]),
               ("tol", "numerics.newton_tolerance", ["1e-4", "1e-6", "1e-8", "1e-10"]),
               ("time_tol", "numerics.time_tolerance", ["0", "1e-2", "1e-3", "1e-4"]),
               INLET],
@@ -80,9 +89,22 @@ SERIES = {
              INLET],
     "heavy": [("N", "numerics.grid_points", ["257", "513", "1025", "2049", "4097", "8193"])],
 }
-# Runs beside the series (case, label, key, value): compared with the reference of the case's
-# grid series.
-EXTRA = [("heavy", "automatic grid", "numerics.grid_points", "0")]
+# The series whose own finest run is not its reference: (case, series) -> the series whose
+# reference setting gives the reference. Each run of the steps series (time_tolerance 0) is
+# compared with the run at the same step count under the time_tolerance of that series'
+# finest value (the controlled film: substeps sized by the local time-error estimate,
+# restarting at the load jumps of B and D), run beside it as the series "<label> reference".
+# The same step count keeps both at the same step ends: max p_max over the step ends depends
+# on how densely they sample the pressure peak after B.
+CONTROLLED_REFERENCE = {("cycle", "steps"): "time_tol"}
+# Series that vary the same thing (the time discretization) and share their references: in
+# the combinations of the recommendations one run of the group is taken, not one of each.
+GROUPS = {"cycle": [("steps", "time_tol")]}
+# Runs beside the series (case, label, key, value, series): compared with the reference of
+# that series (none: run for the text only).
+EXTRA = [("heavy", "automatic grid", "numerics.grid_points", "0", "N"),
+         ("cycle", "time_tol check", "numerics.time_tolerance", "1e-5", "time_tol"),
+         ("cycle", "quasi-steady film", "effects.transient", "false", None)]
 CASES = [("cycle", "cases/seed004_sae40.toml", CYCLE_BASE),
          ("disc", "cases/disc_steady.toml", DISC_BASE),
          ("heavy", "cases/disc_steady.toml", HEAVY_BASE)]
@@ -131,19 +153,63 @@ def expand(tehl, name, base_case, scenes, scratch):
     return [os.path.join(folder, "scenes", f"scene_{i:04d}.toml") for i in range(len(scenes))]
 
 
-def run_one(tehl, case):
-    """Runs one case in its own process; returns wall and CPU time of the process."""
-    log = case[:-5] + ".log"
+def timed(args, env, log):
+    """Runs args in its own process (output to log); returns exit code, wall and CPU time (user
+    + system, from wait4) of the process."""
     t0 = time.monotonic()
     with open(log, "w") as out:
-        p = subprocess.Popen([tehl, "run", case], stdout=out, stderr=subprocess.STDOUT)
+        p = subprocess.Popen(args, stdout=out, stderr=subprocess.STDOUT, env=env)
         _, status, usage = os.wait4(p.pid, 0)
-        p.returncode = os.waitstatus_to_exitcode(status)
-    info = {"case": case, "rc": p.returncode, "process_wall_s": time.monotonic() - t0,
-            "cpu_s": usage.ru_utime + usage.ru_stime}
+    return (os.waitstatus_to_exitcode(status), time.monotonic() - t0,
+            usage.ru_utime + usage.ru_stime)
+
+
+def run_one(tehl, case, env=None):
+    """Runs one case in its own process; returns wall and CPU time of the process."""
+    rc, wall, cpu = timed([tehl, "run", case], env, case[:-5] + ".log")
+    info = {"case": case, "rc": rc, "process_wall_s": wall, "cpu_s": cpu}
     with open(case[:-5] + ".json", "w") as f:
         json.dump(info, f)
     return info
+
+
+def grid_sizes(files):
+    """The node counts (grid_points > 0) of scene files; the automatic grid (0) is left out."""
+    sizes = set()
+    for name in files:
+        with open(name) as f:
+            for line in f:
+                m = re.match(r"grid_points\s*=\s*(\d+)", line)
+                if m and int(m.group(1)) > 0:
+                    sizes.add(int(m.group(1)))
+    return sorted(sizes)
+
+
+def warm_plans(tehl, sizes, scratch, env):
+    """Plans the FFTs of every grid size into the wisdom file of env, one size at a time (so
+    that no concurrent process overwrites a size's plans): the steady isothermal disc of
+    cases/disc_steady.toml at each node count, run twice. The first run measures the plans
+    and writes them back, the second reads them; the difference of their CPU times is the
+    one-off planning a fresh process pays for that size. Returns {size: (cold CPU, warm CPU)}."""
+    files = expand(tehl, "fftw_plans", os.path.join(ROOT, "cases/disc_steady.toml"),
+                   [{"numerics.grid_points": str(n)} for n in sizes], scratch)
+    out = {}
+    for n, case in zip(sizes, files):
+        cpu = []
+        for _ in range(2):
+            rc, _, c = timed([tehl, "run", case], env, case[:-5] + ".log")
+            if rc != 0:
+                fail(f"{case}: the planning run failed (rc {rc}): see {case[:-5]}.log")
+            cpu.append(c)
+        out[n] = tuple(cpu)
+    return out
+
+
+def startup_cpu(tehl, scratch, env, repeats=5):
+    """The start-up of the binary: the least CPU time of `tehl --version` (loading the program
+    and its shared libraries) over `repeats` processes."""
+    log = os.path.join(scratch, "startup.log")
+    return min(timed([tehl, "--version"], env, log)[2] for _ in range(repeats))
 
 
 def read_contact_steps(path):
@@ -172,6 +238,13 @@ def read_contact_steps(path):
             "restarts": int(sum(restarts)) if restarts else 0}
 
 
+def at_s(s, v, s0):
+    """v at s0, linear between the two steps around it (s increasing along the path; the end
+    value outside it). The pitch point C is in general no step end: the nearest step can lie
+    a large part of a step away (118 um at 40 steps of the seed 004 cycle)."""
+    return float(np.interp(s0, s, v))
+
+
 def read_result(info):
     """Summaries of one run: the seed's quantities and the times."""
     stem = info["case"][:-5]
@@ -181,14 +254,27 @@ def read_result(info):
         with h5py.File(h5, "r") as f:
             c = f["cycle"]
             s = c["s"][:]
-            i_c = int(np.argmin(np.abs(s - c.attrs["s_C"])))
             row["h_min"] = float(np.min(c["h_min"][:]))
-            row["h_c"] = float(c["h_c"][i_c])
+            row["h_c"] = at_s(s, c["h_c"][:], float(c.attrs["s_C"]))
             row["p_max"] = float(np.max(c["p_max"][:]))
             row["T_max"] = float(np.max(c["T_max"][:])) if "T_max" in c else None
             row["mu"] = float(np.mean(c["mu"][:])) if "mu" in c else None
             row["wall_s"] = float(f.attrs["wall_time"])
             row["steps_run"] = len(s) - 1
+            # For the text on the time step: where max p_max lies (from B), the largest
+            # per-step time-error estimate and where (from D), the loads around B.
+            s_b, s_d = float(c.attrs["s_B"]), float(c.attrs["s_D"])
+            row["p_max_after_B"] = float(s[int(np.argmax(c["p_max"][:]))] - s_b)
+            if "solver/time_error" in f:
+                te = f["solver/time_error"][:]
+                row["time_error_max"] = float(np.max(te))
+                row["time_error_after_D"] = float(s[int(np.argmax(te))] - s_d)
+            w = c["w"][:]
+            i_b = int(np.argmin(np.abs(s - s_b)))
+            if i_b + 1 < len(s):
+                row["w_at_B"] = [float(w[i_b]), float(w[i_b + 1])]
+            row["C_after_B"] = float(c.attrs["s_C"]) - s_b
+            row["C_offset"] = float(np.min(np.abs(s - float(c.attrs["s_C"]))))
             # A run whose failed time steps were replaced by the steady film (docs/results.md)
             # is not a converged transient run: it neither has an error nor serves as a
             # reference.
@@ -207,13 +293,13 @@ def read_result(info):
     return row
 
 
-def run_all(tehl, cases, jobs, reuse):
+def run_all(tehl, cases, jobs, reuse, env=None):
     def one(case):
         cached = case[:-5] + ".json"
         if reuse and os.path.isfile(cached):
             with open(cached) as f:
                 return json.load(f)
-        return run_one(tehl, case)
+        return run_one(tehl, case, env)
 
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         infos = list(pool.map(one, cases))
@@ -231,7 +317,9 @@ def pct(e):
 
 
 def fmt_t(t):
-    return "-" if t is None else f"{t:.1f}"
+    if t is None:
+        return "-"
+    return f"{t:.3f}" if t < 1 else f"{t:.2f}" if t < 10 else f"{t:.1f}"
 
 
 def richardson(values, ratio=2.0):
@@ -250,25 +338,61 @@ def reference(rows):
     return ok[-1] if ok else None
 
 
+def references(case_name, label, rows_by_series):
+    """The reference of each run of a series (None where there is none): the finest converged
+    run of the series, or for a series of CONTROLLED_REFERENCE its controlled run at the same
+    setting (the series "<label> reference")."""
+    rows = rows_by_series[label]
+    if (case_name, label) in CONTROLLED_REFERENCE:
+        return [r if r["ok"] else None for r in rows_by_series[label + " reference"]]
+    return [reference(rows)] * len(rows)
+
+
+def base_row(rows):
+    return next((r for r in rows if r["is_base"]), None)
+
+
+def base_cpu_of(case_name, rows_by_series):
+    """The CPU time of the base run of a case (the base of its first series)."""
+    b = base_row(rows_by_series[SERIES[case_name][0][0]])
+    return b["cpu_s"] if b else None
+
+
 def series_tables(case_name, rows_by_series):
     out = []
     for label, key, values, *_ in SERIES[case_name]:
         rows = rows_by_series[label]
-        ref = reference(rows)
+        refs = references(case_name, label, rows_by_series)
         base_cpu = next((r["cpu_s"] for r in rows if r["is_base"]), None)
-        ref_v = values[rows.index(ref)] if ref else "none (no run converged)"
-        out.append(f"\n**{case_name}, {label}** (`{key}`; reference: {label} = {ref_v})\n")
+        if (case_name, label) in CONTROLLED_REFERENCE:
+            other = CONTROLLED_REFERENCE[(case_name, label)]
+            o_key, o_values = next((k, v) for lb, k, v, *_ in SERIES[case_name] if lb == other)
+            head = (f"reference: each run against the controlled-step film at the same {label} "
+                    f"(`{o_key}` = {o_values[-1]}, the reference of the series {other}), not "
+                    f"against the finest run of the series")
+        else:
+            ref = refs[0]
+            head = "reference: " + (f"{label} = {values[rows.index(ref)]}" if ref
+                                    else "none (no run converged)")
+        out.append(f"\n**{case_name}, {label}** (`{key}`; {head})\n")
         out.append("| " + " | ".join([label] + [f"err {q} [%]" for q, _ in QUANTITIES] +
                                       ["wall [s]", "CPU [s]", "CPU / base", "status"]) + " |")
         out.append("|" + "---|" * (len(QUANTITIES) + 5))
-        for v, r in zip(values, rows):
+        for v, r, ref in zip(values, rows, refs):
             errs = [("ref" if r is ref else pct(rel_error(r[q], ref[q])) if r["ok"] and ref
                      else "-") for q, _ in QUANTITIES]
             rel = "-" if not base_cpu else f"{r['cpu_s'] / base_cpu:.2f}"
             out.append("| " + " | ".join([v] + errs + [fmt_t(r["wall_s"]), fmt_t(r["cpu_s"]),
                                                       rel, "ok" if r["ok"] else
                                                       f"failed (rc {r['rc']})"]) + " |")
+        if (case_name, label) in CONTROLLED_REFERENCE:
+            crows = rows_by_series[label + " reference"]
+            out.append("\nThe controlled runs (the references): max p_max " +
+                       ", ".join(f"{r['p_max'] / 1e9:.3f}" if r["ok"] else "-" for r in crows) +
+                       f" GPa at {', '.join(values)} {label}; CPU " +
+                       ", ".join(fmt_t(r["cpu_s"]) for r in crows) + " s.\n")
         if label == "N" and len(rows) >= 3 and all(r["ok"] for r in rows[-3:]):
+            ref = refs[-1]
             notes = []
             for q, _ in QUANTITIES:
                 p, lim = richardson([r[q] for r in rows[-3:]])
@@ -294,48 +418,79 @@ def chosen_nodes(case):
 
 
 def extra_lines(case_name, rows_by_series):
-    """The runs beside the series (EXTRA), each against the reference of the grid series."""
+    """The runs beside the series (EXTRA), each against the reference of its series."""
     out = []
-    ref = reference(rows_by_series.get("N", []))
-    for name, label, key, v in EXTRA:
-        if name != case_name or label not in rows_by_series:
+    base_cpu = base_cpu_of(case_name, rows_by_series)
+    for name, label, key, v, series in EXTRA:
+        if name != case_name or label not in rows_by_series or series is None:
             continue
+        ref = reference(rows_by_series.get(series, []))
+        ref_v = next((x["value"] for x in rows_by_series[series] if x is ref), None)
         r = rows_by_series[label][0]
-        n = chosen_nodes(r["case"])
-        base_cpu = next((x["cpu_s"] for x in rows_by_series["N"] if x["is_base"]), None)
+        n = chosen_nodes(r["case"]) if key == "numerics.grid_points" else None
         errs = ", ".join(f"{q} {pct(rel_error(r[q], ref[q]))} %" for q, _ in QUANTITIES
                          if r["ok"] and ref and ref[q] is not None)
-        out.append(f"\n**{case_name}, {label}** (`{key} = {v}`): "
-                   f"{'chose ' + str(n) + ' nodes' if n else 'node count not in its log'}; " +
-                   (f"errors against the reference: {errs}; " if errs else "did not converge; ") +
+        out.append(f"\n**{case_name}, {label}** (`{key} = {v}`): " +
+                   (f"chose {n} nodes; " if n else
+                    "node count not in its log; " if key == "numerics.grid_points" else "") +
+                   (f"differences from the reference of the series {series} ({series} = "
+                    f"{ref_v}): {errs}; " if errs else "did not converge; ") +
                    f"CPU {fmt_t(r['cpu_s'])} s" +
                    (f" ({r['cpu_s'] / base_cpu:.2f} of the base)" if base_cpu else "") + ".\n")
     return out
 
 
-def cheapest(case_name, rows_by_series, q, target):
-    """The cheapest combination of one setting per series whose estimated error in q is within
-    target. Model (one setting varied at a time): the error of a combination is the sum of the
-    errors of its settings, each against the reference of its series, and its CPU time is the
-    base CPU time times the product of the settings' CPU / base. Only converged runs count."""
-    options = []
-    for label, _, values, *_ in SERIES[case_name]:
-        rows = rows_by_series[label]
-        ref = reference(rows)
-        base = next((r for r in rows if r["is_base"]), None)
-        if ref is None or base is None or not base["ok"]:
-            return None
+def option_groups(case_name, rows_by_series):
+    """The settings a combination chooses from: one group per series, or one per group of
+    GROUPS (series that vary the same thing; a run of one of them keeps the others at the
+    base). Each option: (text, {quantity: error against its reference}, CPU / base). Only
+    converged runs with a reference count; None when a series has no converged base."""
+    groups = []
+    grouped = {}
+    for g in GROUPS.get(case_name, []):
+        for label in g:
+            grouped[label] = g
+    done = set()
+    for label, _, _, *_ in SERIES[case_name]:
+        g = grouped.get(label, (label,))
+        if g in done:
+            continue
+        done.add(g)
         opts = []
-        for v, r in zip(values, rows):
-            e = 0.0 if r is ref else rel_error(r[q], ref[q])
-            if r["ok"] and e is not None:
-                opts.append((label, v, e, r["cpu_s"] / base["cpu_s"]))
-        options.append(opts)
-    base_cpu = next(r for r in rows_by_series[SERIES[case_name][0][0]] if r["is_base"])["cpu_s"]
+        for lb in g:
+            rows = rows_by_series[lb]
+            base = base_row(rows)
+            if base is None or not base["ok"]:
+                return None
+            for r, ref in zip(rows, references(case_name, lb, rows_by_series)):
+                if not r["ok"] or ref is None:
+                    continue
+                errs = {q: (0.0 if r is ref else rel_error(r[q], ref[q])) for q, _ in QUANTITIES
+                        if ref[q] is not None}
+                # A quantity missing from a run (a result file of an earlier format) is left out.
+                errs = {q: e for q, e in errs.items() if e is not None}
+                text = ", ".join(f"{x} = " + (r["value"] if x == lb else
+                                              base_row(rows_by_series[x])["value"]) for x in g)
+                opts.append((text, errs, r["cpu_s"] / base["cpu_s"]))
+        groups.append(opts)
+    return groups
+
+
+def cheapest(case_name, rows_by_series, q, target):
+    """The cheapest combination of one setting per series (per group of GROUPS) whose
+    estimated error in q is within target. Model (one setting varied at a time): the error of
+    a combination is the sum of the errors of its settings, each against the reference of its
+    run, and its CPU time is the base CPU time times the product of the settings' CPU / base.
+    Only converged runs count."""
+    groups = option_groups(case_name, rows_by_series)
+    if not groups:
+        return None
+    options = [[o for o in g if q in o[1]] for g in groups]
+    base_cpu = base_cpu_of(case_name, rows_by_series)
     best = None
     for combo in itertools.product(*options):
-        err = sum(o[2] for o in combo)
-        cost = base_cpu * float(np.prod([o[3] for o in combo]))
+        err = sum(o[1][q] for o in combo)
+        cost = base_cpu * float(np.prod([o[2] for o in combo]))
         if err <= target and (best is None or cost < best[0]):
             best = (cost, err, combo)
     return best
@@ -343,32 +498,18 @@ def cheapest(case_name, rows_by_series, q, target):
 
 def combinations(case_name, rows_by_series):
     """(estimated CPU time, estimated largest error over the quantities) of every combination
-    of one setting per series, with the additive error model of cheapest()."""
-    options = []
-    for label, _, values, *_ in SERIES[case_name]:
-        rows = rows_by_series[label]
-        ref = reference(rows)
-        base = next((r for r in rows if r["is_base"]), None)
-        if ref is None or base is None or not base["ok"]:
-            return []
-        opts = []
-        for r in rows:
-            if not r["ok"]:
-                continue
-            errs = {q: (0.0 if r is ref else rel_error(r[q], ref[q])) for q, _ in QUANTITIES
-                    if ref[q] is not None}
-            # A quantity missing from a run (a result file of an earlier format) is left out.
-            errs = {q: e for q, e in errs.items() if e is not None}
-            opts.append((errs, r["cpu_s"] / base["cpu_s"]))
-        options.append(opts)
-    base_cpu = next(r for r in rows_by_series[SERIES[case_name][0][0]] if r["is_base"])["cpu_s"]
+    of one setting per series (per group), with the additive error model of cheapest()."""
+    groups = option_groups(case_name, rows_by_series)
+    if not groups:
+        return []
+    base_cpu = base_cpu_of(case_name, rows_by_series)
     out = []
-    for combo in itertools.product(*options):
-        qs = set.intersection(*(set(o[0]) for o in combo))
+    for combo in itertools.product(*groups):
+        qs = set.intersection(*(set(o[1]) for o in combo))
         if not qs:
             continue
-        err = max(sum(o[0][q] for o in combo) for q in qs)
-        out.append((base_cpu * float(np.prod([o[1] for o in combo])), err))
+        err = max(sum(o[1][q] for o in combo) for q in qs)
+        out.append((base_cpu * float(np.prod([o[2] for o in combo])), err))
     return out
 
 
@@ -389,9 +530,8 @@ def pareto_plot(data, path):
                     label="Pareto front of the combinations")
         for label, _, values, *_ in SERIES[case_name]:
             rows = data[case_name][label]
-            ref = reference(rows)
             xs, ys = [], []
-            for v, r in zip(values, rows):
+            for v, r, ref in zip(values, rows, references(case_name, label, data[case_name])):
                 if ref is None or r is ref or not r["ok"]:
                     continue
                 errs = [rel_error(r[q], ref[q]) for q, _ in QUANTITIES]
@@ -406,7 +546,7 @@ def pareto_plot(data, path):
             ax.plot(xs, ys, markers[label], label=f"{label} varied, others at base (measured)")
         ax.set_xscale("log")
         ax.set_yscale("log")
-        ax.set_xlabel("CPU time of the run [s]")
+        ax.set_xlabel("CPU time of the run (less the start-up; no FFTW planning) [s]")
         ax.set_ylabel("largest relative error [%]")
         ax.set_title({"cycle": "seed 004 mesh cycle, thermal Ree-Eyring",
                       "disc": "steady thermal Ree-Eyring disc, SRR 0.4"}[case_name] +
@@ -433,6 +573,10 @@ def main():
     os.makedirs(scratch, exist_ok=True)
     started = time.monotonic()
     load_before = os.getloadavg()
+    # Every run reads the FFTW plans of its grid size from this file (warmed below), so that
+    # no run's time counts the one-off planning (docs/performance.md, "One-off cost").
+    wisdom = os.path.join(scratch, "fftw.wisdom")
+    env = dict(os.environ, TEHL_FFTW_WISDOM=wisdom)
 
     # Expand every scene first (so that input problems show before anything runs).
     plan = []  # (case name, series label, value, is_base, scene file)
@@ -443,7 +587,14 @@ def main():
                 more = extra[0].get(v, {}) if extra else {}
                 scenes.append(dict(base, **{key: v}, **more))
                 meta.append((case_name, label, v, v == base[key] and not more))
-        for name, label, key, v in EXTRA:
+            if (case_name, label) in CONTROLLED_REFERENCE:
+                other = CONTROLLED_REFERENCE[(case_name, label)]
+                o_key, o_values = next((k, vs) for lb, k, vs, *_ in SERIES[case_name]
+                                       if lb == other)
+                for v in values:
+                    scenes.append(dict(base, **{key: v, o_key: o_values[-1]}))
+                    meta.append((case_name, label + " reference", v, False))
+        for name, label, key, v, _ in EXTRA:
             if name == case_name:
                 scenes.append(dict(base, **{key: v}))
                 meta.append((case_name, label, v, False))
@@ -475,29 +626,128 @@ def main():
     for p in plan:
         first_of.setdefault((p[0], settings(p[4])), p[4])
     to_run = list(dict.fromkeys(first_of.values())) + effect_files
+    meta = os.path.join(scratch, "meta.json")
+    if a.reuse and os.path.isfile(meta):  # the figures of the run that computed the results
+        with open(meta) as f:
+            m = json.load(f)
+        if not isinstance(m, dict) or "startup" not in m:
+            fail(f"{meta}: written by an earlier version of this script: run without --reuse")
+    else:
+        m = {}
+        if os.path.exists(wisdom):
+            os.remove(wisdom)
+        sizes = grid_sizes(to_run)
+        print(f"accuracy_report.py: planning the FFTs of {len(sizes)} grid sizes",
+              file=sys.stderr)
+        m["planning"] = {str(n): c for n, c in warm_plans(tehl, sizes, scratch, env).items()}
+        m["startup"] = startup_cpu(tehl, scratch, env)
     print(f"accuracy_report.py: {len(to_run)} runs, {a.jobs} at a time", file=sys.stderr)
-    results = {r["case"]: r for r in run_all(tehl, to_run, a.jobs, a.reuse)}
+    results = {r["case"]: r for r in run_all(tehl, to_run, a.jobs, a.reuse, env)}
+    # CPU time of the run: the process's, less the start-up of the binary.
+    for r in results.values():
+        r["process_cpu_s"] = r["cpu_s"]
+        r["cpu_s"] = max(r["cpu_s"] - m["startup"], 0.0)
 
     data = {name: {} for name, _, _ in CASES}
     for case_name, label, v, is_base, f in plan:
         r = dict(results[first_of[(case_name, settings(f))]], is_base=is_base, value=v)
         data[case_name].setdefault(label, []).append(r)
     effects = [results[f] for f in effect_files]
-    elapsed = time.monotonic() - started
-    load_after = os.getloadavg()
-    meta = os.path.join(scratch, "meta.json")
-    if a.reuse and os.path.isfile(meta):  # the figures of the run that computed the results
-        with open(meta) as f:
-            elapsed, load_before, load_after = json.load(f)
-    else:
+    if "elapsed" not in m:
+        m.update(elapsed=time.monotonic() - started, load_before=load_before,
+                 load_after=os.getloadavg())
         with open(meta, "w") as f:
-            json.dump([elapsed, load_before, load_after], f)
+            json.dump(m, f)
 
     pareto_plot(data, os.path.join(a.docs, "accuracy_pareto.png"))
-    write_markdown(a, data, effects, elapsed, load_before, load_after)
+    write_markdown(a, data, effects, m)
 
 
-def write_markdown(a, data, effects, elapsed, load_before, load_after):
+def listed(rows, fmt):
+    """fmt(row) of each converged row, '-' for the others, joined by commas."""
+    return ", ".join(fmt(r) if r["ok"] else "-" for r in rows)
+
+
+def time_step_lines(cyc):
+    """Why max p_max of the cycle converges slowly with equal steps, in the measured numbers
+    of the steps series, its controlled references, the time_tol series and the quasi-steady
+    film."""
+    steps, crefs = cyc["steps"], cyc["steps reference"]
+    tt = cyc["time_tol"]
+    tt_ref = reference(tt)
+    values = [r["value"] for r in steps]
+    controlled = next((r for r in crefs if r["ok"]), None)
+    if controlled is None or tt_ref is None or "w_at_B" not in controlled:
+        return ["The controlled runs did not converge: no account of the time step.\n"]
+    w0, w1 = controlled["w_at_B"]
+    qs = cyc.get("quasi-steady film", [None])[0]
+    ok_c = [r for r in crefs if r["ok"]]
+
+    def spread(q):
+        v = [r[q] for r in ok_c]
+        return (max(v) - min(v)) / min(v)
+
+    gpa = (lambda r: f"{r['p_max'] / 1e9:.3f}")
+    t1 = next((r for r in tt if r["value"] == "1e-3"), None)
+    t0 = next((r for r in tt if r["is_base"]), None)
+    out = [
+        f"The static load sharing makes the tooth load jump at B (from {w0 / 1e3:.1f} to "
+        f"{w1 / 1e3:.1f} kN/m, the single pair taking the whole load) and back at D. The jump "
+        f"at B starts a squeeze transient of the film through the single-tooth zone B-D, and "
+        f"max p_max of the cycle is a peak of it: {1e3 * tt_ref['p_max_after_B']:.2f} mm "
+        f"after B in the controlled film at {tt_ref['value']} (C lies "
+        f"{1e3 * tt_ref['C_after_B']:.2f} mm after B)" +
+        (f"; without the squeeze term (`[effects] transient = false`, 80 steps) max p_max is "
+         f"{gpa(qs)} GPa" if qs is not None and qs["ok"] else "") + ".",
+        "",
+        f"- Equal steps (`time_tolerance` 0) resolve that transient the better the shorter "
+        f"they are, and max p_max keeps rising with the step count: {listed(steps, gpa)} GPa "
+        f"at {', '.join(values)} steps.",
+        f"- The controlled film (`time_tolerance` = {tt_ref['value']}) at the same step counts: "
+        f"{listed(crefs, gpa)} GPa. Its film hardly depends on the step count (h_min within "
+        f"{pct(spread('h_min'))} %, h_c at C within {pct(spread('h_c'))} % with the "
+        f"interpolation between step ends), but its peak is "
+        f"sampled only at the step ends, so the maximum over them still depends on how close a "
+        f"step end falls to the peak. That is why each equal-step run is compared with the "
+        f"controlled run of its own step count.",
+        f"- Against the single controlled run at {tt_ref['steps_run']} steps (the reference "
+        f"of the series time_tol) the equal-step runs' max p_max would be " +
+        listed(steps, lambda r: f"{100 * (r['p_max'] / tt_ref['p_max'] - 1):+.1f}") + " % off" +
+        (f": the {values[-1]}-step run lies above it because its denser step ends come closer "
+         f"to the peak, not because it is more accurate than that run (it is "
+         f"{pct(rel_error(steps[-1]['p_max'], crefs[-1]['p_max']))} % below the controlled "
+         f"film at its own step count)." if steps[-1]["ok"] and crefs[-1]["ok"] and
+         steps[-1]["p_max"] > tt_ref["p_max"] else "."),
+        "- The largest per-step time-error estimate (`/solver/time_error`) of the equal-step "
+        "runs grows with the step count: " +
+        listed(steps, lambda r: f"{r['time_error_max']:.2f}") + ", each " +
+        listed(steps, lambda r: f"{1e3 * r['time_error_after_D']:.2f}") +
+        " mm after D, where the load drops; after a load drop equal steps do not converge "
+        "(docs/case_format.md, `time_tolerance`).",
+        f"- `time_tolerance` is the way to control it: each step is split into substeps until "
+        f"every local estimate is below the tolerance, and the integration restarts at the "
+        f"jumps. At {tt_ref['value']} the largest estimate is {tt_ref['time_error_max']:.3g}" +
+        (f"; {t1['value']} brings max p_max within {pct(rel_error(t1['p_max'], tt_ref['p_max']))}"
+         f" % of {tt_ref['value']} at {t1['cpu_s'] / t0['cpu_s']:.1f} times the CPU time of no "
+         f"control" if t1 and t0 and t1["ok"] and t0["ok"] else "") + ".\n",
+    ]
+    return out
+
+
+def write_markdown(a, data, effects, m):
+    elapsed, load_before, load_after = m["elapsed"], m["load_before"], m["load_after"]
+    cyc = data["cycle"]
+    far = max((r for r in cyc["steps"] if "C_offset" in r), key=lambda r: r["C_offset"])
+    c_off = (far["value"], f"{1e6 * far['C_offset']:.0f}")
+    tt_ref = reference(cyc["time_tol"])
+    tt_ref_v = tt_ref["value"] if tt_ref else "-"
+    base_c = references("cycle", "steps", cyc)[[r["value"] for r in cyc["steps"]].index(
+        CYCLE_BASE["numerics.steps"])]
+    base_time_err = pct(rel_error(base_row(cyc["steps"])["p_max"], base_c["p_max"])) \
+        if base_c else "-"
+    disc_base = base_row(data["disc"]["N"])
+    c257 = m["planning"].get(DISC_BASE["numerics.grid_points"])
+    plan_257 = fmt_t(c257[0] - c257[1]) if c257 else "-"
     md = []
     md.append("# Accuracy against run time\n")
     md.append("Generated by `scripts/accuracy_report.sh` (runs `scripts/accuracy_report.py`; "
@@ -506,30 +756,57 @@ def write_markdown(a, data, effects, elapsed, load_before, load_after):
     md.append(f"This run: {elapsed / 60:.1f} min in all, {a.jobs} runs at a time; load "
               f"average {load_before[0]:.1f} at the start, {load_after[0]:.1f} at the end on "
               f"a 2-core machine shared with other work. **Wall times are noisy** (a run got "
-              f"a fraction of a core); the CPU time of each run's process (user + system, "
-              f"from wait4) is the stable measure, and the relative costs (CPU / base) are "
-              f"the numbers to carry to another machine.\n")
+              f"a fraction of a core); the CPU time of each run (below) is the stable "
+              f"measure, and the relative costs (CPU / base) are the numbers to carry to "
+              f"another machine.\n")
     md.append("## What was run\n")
     md.append("- **cycle**: `cases/seed004_sae40.toml` (seed 004 SAE 40, 10 kW, 1000 rpm) "
               "with `thermal = true` and the Ree-Eyring film (`non_newtonian = true`, "
               "tau0 = 5 MPa), the film model of the shipped studies; base 257 nodes, "
               "`film_nodes` 11, 80 steps, `newton_tolerance` 1e-8, `time_tolerance` 0 (no "
               "substeps for the time error; the series **time_tol** sets it: docs/case_format.md). "
-              "Quantities: min over the "
-              "cycle of h_min, h_c at the pitch point, max of p_max, max of T_max, mean of mu.")
+              "Quantities over the step ends of the cycle: min of h_min; h_c at the pitch point "
+              "C, interpolated linearly in s between the two step ends around C (C is in "
+              "general no step end: at " + c_off[0] + " steps the nearest lies " + c_off[1] +
+              " um from it); max of p_max; max of T_max; mean of mu.")
     md.append("- **disc**: `cases/disc_steady.toml` (steel discs, R = 10 mm, SAE 40, "
               "100 kN/m, p_H = 0.60 GPa) with sliding (u1 = 1.2, u2 = 0.8 m/s, SRR 0.4), "
               "thermal and Ree-Eyring, steady; base 257 nodes, 11 film nodes, tolerance 1e-8. "
               "Quantities from the [contact] result (`_steps.csv`): h_min, h_c and p_max of "
-              "the (single) steady step, max of `t_max_k`, mean of `mu`; the wall time is the "
-              "sum of its `wall_time_s` column (the solve only).")
+              "the (single) steady step, max of `t_max_k`, mean of `mu`.")
     md.append("- One setting varied at a time, the others at the base. The error is relative "
-              "to the finest converged run of the same series (the reference, 'ref'); a run "
+              "to the finest converged run of the same series (the reference, 'ref'), except "
+              "for the series **steps** (next item); a run "
               "that did not converge, or had a time step replaced by the steady film "
               "(`[numerics] failed_step`), has no error ('-'). For the grid the Richardson "
               "estimate below each table says how far that reference itself is from the grid "
               "limit. The thermal coupling tolerance (0.01 K) has no case key and is not "
               "varied.")
+    md.append(f"- **steps** (equal steps, `time_tolerance` 0): its finest run is no reference, "
+              f"because max p_max has not converged in the step count (section 'The time step "
+              f"and max p_max'). Each run is compared with the controlled-step film "
+              f"(`time_tolerance` = {tt_ref_v}, the reference of the series **time_tol**, "
+              f"which `time_tolerance` = 1e-5 confirms below its table) run at the same step "
+              f"count, so that both are sampled at the same step ends. The other cycle series "
+              f"(N, Nz, tol, inlet) run at the base's 80 equal steps and measure their setting "
+              f"at that step; the base itself is {base_time_err} % off the controlled film in "
+              f"max p_max (steps = 80).")
+    md.append(f"- **Times.** 'wall' is the run's own clock: a cycle's HDF5 `wall_time` (the "
+              f"whole run inside the process), a disc's sum of the `wall_time_s` column of its "
+              f"`_steps.csv` (the solve of its step). 'CPU' is the CPU time of the run's "
+              f"process (user + system, from wait4) less the start-up of the binary "
+              f"({fmt_t(m['startup'])} s: the least CPU time of `tehl --version`, which loads "
+              f"the program and its libraries); 'CPU / base' and the recommendations use it. "
+              f"Every run reads its FFTW plans from a wisdom file (`TEHL_FFTW_WISDOM`, "
+              f"docs/performance.md 'One-off cost') planned before the runs, one grid size at a "
+              f"time, so no time here contains the one-off FFTW planning of a grid size, which "
+              f"a single `tehl run` without that file pays once per process. Measured (CPU time "
+              f"of a steady isothermal disc run without and with the plans): " +
+              ", ".join(f"{fmt_t(c[0] - c[1])} s at {n}" for n, c in
+                        sorted(m["planning"].items(), key=lambda x: int(x[0]))) +
+              f" nodes. On the disc that planning is several times the solve (the base disc: "
+              f"{plan_257} s of planning, {fmt_t(disc_base['cpu_s'])} s CPU, "
+              f"{fmt_t(disc_base['wall_s'])} s of solve wall time).")
     md.append("- **inlet**: `numerics.x_start_b` from -3 to -16 (Hertz half-widths b of the "
               "largest contact; the default is -4.5) with `grid_points` raised with the "
               "domain (193, 257, 321, 419, 577 and 771 nodes), so that the node spacing stays "
@@ -552,21 +829,24 @@ def write_markdown(a, data, effects, elapsed, load_before, load_after):
     for case_name, _, _ in CASES:
         md += series_tables(case_name, data[case_name])
         md += extra_lines(case_name, data[case_name])
+    md.append("\n## The time step and max p_max\n")
+    md += time_step_lines(data["cycle"])
     md.append("\n![largest error against CPU time](accuracy_pareto.png)\n")
     md.append("The figure's error is the largest of the five quantities; on the cycle it is "
-              "that of max p_max, the pressure spike near the outlet, which converges slowly "
-              "with the grid (see its Richardson order) and depends on where the steps fall "
-              "in the single-tooth zone B-D. Grey: every combination of one setting per "
-              "series, its error estimated as the sum of the settings' errors and its time "
-              "as the product of their relative costs (the model of the recommendations "
-              "below); markers: measured runs.\n")
+              "mostly that of max p_max, the peak of the squeeze transient after B, which "
+              "converges slowly with the grid (see its Richardson order) and with the step "
+              "(above). Grey: every combination of one setting per series (one run of steps "
+              "or time_tol: both vary the time step), its error estimated as the sum of the "
+              "settings' errors and its time as the product of their relative costs (the model "
+              "of the recommendations below); markers: measured runs.\n")
     md.append("## Recommended settings\n")
     md.append("The cheapest combination of one setting per series whose estimated error is "
-              "within the target; the error of a combination is estimated as the sum of its "
-              "settings' errors (each measured with the others at the base) and its CPU time "
-              "as the base time times the product of the settings' CPU / base. The errors are "
-              "against the finest runs, not the exact solution (see the Richardson line of "
-              "the grid).\n")
+              "within the target (steps and time_tol count as one series: a run of one keeps "
+              "the other at the base); the error of a combination is estimated as the sum of "
+              "its settings' errors (each measured with the others at the base) and its CPU "
+              "time as the base time times the product of the settings' CPU / base. The errors "
+              "are against the references of the tables, not the exact solution (see the "
+              "Richardson line of the grid).\n")
     for case_name, _, _ in CASES:
         for q in ["h_min", "h_c", "p_max", "T_max", "mu"]:
             grid = data[case_name]["N"]
@@ -587,8 +867,7 @@ def write_markdown(a, data, effects, elapsed, load_before, load_after):
                 if b:
                     cost, err, combo = b
                     md.append(f"- {case_name}: {100 * target:g} % on {q} costs about "
-                              f"{cost:.1f} s CPU: " + ", ".join(f"{o[0]} = {o[1]}"
-                                                                 for o in combo) +
+                              f"{fmt_t(cost)} s CPU: " + ", ".join(o[0] for o in combo) +
                               f" (estimated error {pct(err)} %).")
     md.append("")
     md.append("## Cost of each effect\n")

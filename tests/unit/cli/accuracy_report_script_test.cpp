@@ -1,8 +1,9 @@
 // scripts/accuracy_report.py reads a [contact] run's NAME_steps.csv: h_min, h_c, p_max of the
 // last step, max of t_max_k, mean of mu, the wall time as the sum of wall_time_s (None for a
 // file written before those columns existed), on hand-made files and on a real 129-node disc
-// run. The script's functions are called by /usr/bin/python3 (the interpreter of
-// scripts/accuracy_report.sh); the report itself (a 12-minute run) is not made here.
+// run; and it takes a mesh cycle's h_c at the pitch point linearly between the two step ends
+// around C. The script's functions are called by /usr/bin/python3 (the interpreter of
+// scripts/accuracy_report.sh); the report itself (a run of a few minutes) is not made here.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -107,6 +108,18 @@ TEST(AccuracyReport, ContactStepsWithoutTheNewColumnsGiveNone) {
   const std::string empty = testing::UniqueTempPath("empty_steps.csv");
   std::ofstream(empty) << header;
   EXPECT_EQ(CallScript("a.read_contact_steps('" + empty + "')").at("result"), "None");
+}
+
+// A mesh cycle's h_c at the pitch point C (read_result of a NAME.h5) is at_s(/cycle/s,
+// /cycle/h_c, s_C): linear in s between the two step ends around C, which is in general no step
+// end; at a step end that step's value. By hand: 5 + 0.25 (9 - 5) = 6, exact in binary.
+TEST(AccuracyReport, PitchFilmIsInterpolatedBetweenTheStepsAroundC) {
+  if (!PythonReady()) GTEST_SKIP() << "/usr/bin/python3 without h5py, matplotlib or numpy";
+  const auto m = CallScript(
+      "{'between': a.at_s([0.0, 1.0, 2.0], [3.0, 5.0, 9.0], 1.25), "
+      "'at_step': a.at_s([0.0, 1.0, 2.0], [3.0, 5.0, 9.0], 1.0)}");
+  EXPECT_EQ(Num(m, "between"), 6.0);
+  EXPECT_EQ(Num(m, "at_step"), 5.0);
 }
 
 // Column `name` of a CSV file with a header row, as numbers.
