@@ -95,9 +95,11 @@ void Geometry(std::ostream& o, const internal::GearCase& c) {
   if (asym)
     Row(o, "K = r_bc / r_bd", Fmt("%.4f", g1.BaseRadiusRatio()), Fmt("%.4f", g2.BaseRadiusRatio()));
   o << "  centre distance a = " << mm(p.center_distance_m())
-    << " mm (a0 = " << mm(p.reference_center_distance_m())
-    << " mm, y = " << Fmt("%.5f", p.center_distance_modification()) << ", zero backlash at "
-    << mm(p.zero_backlash_center_distance_m()) << " mm), backlash "
+    << " mm (a0 = " << mm(p.reference_center_distance_m()) << " mm, y = "
+    << Fmt("%.5f", std::abs(p.center_distance_modification()) < 5e-6
+                       ? 0.0
+                       : p.center_distance_modification())
+    << ", zero backlash at " << mm(p.zero_backlash_center_distance_m()) << " mm), backlash "
     << Fmt("%.2f", std::abs(p.backlash_m()) < 5e-9 ? 0.0 : p.backlash_m() * 1e6) << " um\n";
   o << "  radial clearances: pinion tip " << mm(p.pinion_tip_clearance_m()) << " mm, wheel tip "
     << mm(p.wheel_tip_clearance_m()) << " mm\n";

@@ -3,6 +3,7 @@
 // rack speeds, the tabulation table of each carrier, the planet design rules, and the DC
 // motor's operating point when the file has a [motor]. Exit 2 for bad input, 1 when the
 // motor has no running operating point.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -141,8 +142,12 @@ int Motor(std::ostream& o, const internal::TrainFile& f, const internal::TrainRe
   o << "    motor  " << Fmt("%.6g", RadPerSToRpm(p.motor_speed_rad_s)) << " rpm ("
     << Fmt("%.6g", p.motor_speed_rad_s) << " rad/s), torque " << Fmt("%.6g", p.motor_torque_nm)
     << " N m, armature current " << Fmt("%.6g", p.armature_current_a) << " A\n";
-  o << "    power  input " << Fmt("%.6g", p.input_power_w) << " W, shaft "
-    << Fmt("%.6g", p.shaft_power_w) << " W, load " << Fmt("%.6g", p.load_power_w) << " W\n";
+  // A power that is the rounding residue of a balance at no load prints as 0.
+  const auto watts = [&](double w) {
+    return Fmt("%.6g", std::abs(w) < 1e-9 * std::max(1.0, std::abs(p.input_power_w)) ? 0.0 : w);
+  };
+  o << "    power  input " << watts(p.input_power_w) << " W, shaft " << watts(p.shaft_power_w)
+    << " W, load " << watts(p.load_power_w) << " W\n";
   o << "    load   " << Fmt("%.6g", RadPerSToRpm(p.load_speed_rad_s)) << " rpm ("
     << Fmt("%.6g", p.load_speed_rad_s) << " rad/s), torque " << Fmt("%.6g", p.load_torque_nm)
     << " N m\n";

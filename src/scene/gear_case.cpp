@@ -169,8 +169,12 @@ PairStiffnessFn MakePairStiffness(const GearPair& pair,
     const IsoStiffness iso =
         IsoMethodB(PinionBlank(pair), WheelBlank(pair), pair.line(Flank::kDrive).contact_ratio,
                    pair.spec().helix_angle_rad);
-    // c' [N/(mm um)] per mm of face width -> [N/m] for the whole width.
-    const double k = iso.c_prime_n_per_mm_um * 1e9 * pair.spec().face_width_m;
+    // A constant pair stiffness whose period mean k eps_alpha is ISO's mesh stiffness
+    // c_gamma_alpha (the value ISO 6336-1 takes for the dynamics: K_v's resonance); c' is the
+    // largest single-pair stiffness, which a constant pair would carry at every point.
+    // [N/(mm um)] per mm of face width -> [N/m] for the whole width.
+    const double eps = pair.line(Flank::kDrive).contact_ratio;
+    const double k = iso.c_gamma_alpha_n_per_mm_um / eps * 1e9 * pair.spec().face_width_m;
     owner->reset();
     return [k](double, double) { return k; };
   }

@@ -6,6 +6,10 @@
 
 #include <string>
 
+#include "tehl/gear/mesh_cycle.hpp"
+#include "tehl/gear/mesh_stiffness.hpp"
+#include "tehl/gear/path_of_contact.hpp"
+#include "tehl/gear/tooth_blank.hpp"
 #include "tehl/scene/case_schema.hpp"
 #include "tehl/units.hpp"
 
@@ -63,6 +67,23 @@ TEST(GearCase, BuildsTheSeed004PairAndOperatingPoint) {
   EXPECT_NEAR(c->ReducedModulusPa(), 117e9 / (1 - 0.34 * 0.34), 1e3);
   const auto rows = GearCaseCycle(*c, 51);
   EXPECT_EQ(rows.size(), 55u);
+}
+
+TEST(GearCase, IsoPairStiffnessGivesTheIsoMeshStiffnessAsItsMean) {
+  // ISO 6336-1 method B: c_gamma_alpha = c' (0.75 eps_alpha + 0.25) is the mean mesh
+  // stiffness; a constant pair stiffness k has the period mean k eps_alpha (docs/gear.md), so
+  // k = c_gamma_alpha b / eps_alpha. Seed 004 in steel (E = 206 GPa, nu = 0.3).
+  Document doc = Read(CaseText("mesh_stiffness = \"iso\"\n", ""));
+  const auto c = ReadGearCase(doc);
+  ASSERT_TRUE(doc.problems().empty()) << All(doc);
+  ASSERT_TRUE(c && c->pair && c->pair_stiffness);
+  const double eps = c->pair->line(Flank::kDrive).contact_ratio;
+  const IsoStiffness iso = IsoMethodB(PinionBlank(*c->pair), WheelBlank(*c->pair), eps);
+  EXPECT_NEAR(iso.c_gamma_alpha_n_per_mm_um / iso.c_prime_n_per_mm_um, 0.75 * eps + 0.25, 1e-12);
+  const double k = c->pair_stiffness(0.035, 0.105);
+  EXPECT_NEAR(k * eps, iso.c_gamma_alpha_n_per_mm_um * 1e9 * 0.025, 1e-9 * k * eps);
+  const PathOfContact path(*c->pair, c->operating.pinion_speed_rad_s);
+  EXPECT_NEAR(SummarizeMeshStiffness(path, c->pair_stiffness).mean_n_per_m, k * eps, 1e-3 * k);
 }
 
 TEST(GearCase, UndercutIsReportedAtTheShiftWithFileAndLine) {
