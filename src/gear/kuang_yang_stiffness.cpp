@@ -35,7 +35,7 @@ std::vector<InputProblem> KuangYangStiffness::Validate(const ToothBlank& b,
   const std::string who = "kuang_yang (" + which + "): ";
   if (b.internal) {
     out.push_back(MethodRangeProblem("\"kuang_yang\"", who + "fitted for external gears only",
-                                     "\"potential_energy\" or an external pair"));
+                                     "\"iso\" for a ring gear, or an external pair"));
   }
   if (!(b.teeth > 12 && b.teeth < 100)) {
     out.push_back(MethodRangeProblem(std::to_string(b.teeth),
@@ -49,6 +49,21 @@ std::vector<InputProblem> KuangYangStiffness::Validate(const ToothBlank& b,
     out.push_back(MethodRangeProblem(FormatValue(b.youngs_modulus_pa),
                                      who + "the fit is for steel gears: E [Pa]",
                                      "185e9 <= E <= 227e9 (steel)"));
+  }
+  // The fit depends on z and x only: it is of one tooth form, the standard 20 deg full-depth
+  // tooth (h_aP = 1) of its use in seed 000; another pressure angle or addendum changes the
+  // tooth it describes (at 18 deg with h_aP = 1.25 it is 21 % above the potential energy).
+  if (std::abs(RadToDeg(b.drive_pressure_angle_rad) - 20.0) > 0.5) {
+    out.push_back(MethodRangeProblem(FormatValue(RadToDeg(b.drive_pressure_angle_rad)),
+                                     who + "the fit is of 20 deg teeth: pressure angle [deg]",
+                                     "20 deg (the fit has no pressure angle), or "
+                                     "\"potential_energy\""));
+  }
+  if (std::abs(b.addendum_coefficient - 1.0) > 0.05) {
+    out.push_back(MethodRangeProblem(FormatValue(b.addendum_coefficient),
+                                     who + "the fit is of full-depth teeth: addendum h_aP/m",
+                                     "h_aP/m = 1 (the fit has no addendum), or "
+                                     "\"potential_energy\""));
   }
   if (b.drive_pressure_angle_rad != b.coast_pressure_angle_rad) {
     out.push_back(MethodRangeProblem(FormatValue(RadToDeg(b.coast_pressure_angle_rad)),

@@ -16,7 +16,8 @@
 // Pair: the two teeth in series (4.5), K = K1 K2 / (K1 + K2), times the common face width.
 //
 // Validity (seed 000 section 1.5): symmetric steel teeth, 12 < z < 100, |x| < 0.6; external
-// gears. Enforced by MakePairStiffnessModel("kuang_yang", ...) and Validate().
+// gears; and, as the fit has no parameter for them, the 20 deg full-depth tooth (h_aP = 1) of
+// its use in seed 000. Enforced by MakePairStiffnessModel("kuang_yang", ...) and Validate().
 #pragma once
 
 #include <string>

@@ -106,6 +106,15 @@ TEST(KuangYangStiffness, RejectsBlanksOutsideTheFit) {
   ToothBlank asymmetric = ok;
   asymmetric.drive_pressure_angle_rad = DegToRad(35.0);
   ExpectRangeError([&] { KuangYangStiffness(asymmetric, ok); }, "20");
+  // The fit has no pressure angle and no addendum: another tooth form than the 20 deg
+  // full-depth tooth is outside it (at 18 deg, h_aP = 1.25 it lies 21 % above the potential
+  // energy of the same teeth).
+  ToothBlank eighteen = ok;
+  eighteen.drive_pressure_angle_rad = eighteen.coast_pressure_angle_rad = DegToRad(18.0);
+  ExpectRangeError([&] { KuangYangStiffness(eighteen, ok); }, "18");
+  ToothBlank long_addendum = ok;
+  long_addendum.addendum_coefficient = 1.25;
+  ExpectRangeError([&] { KuangYangStiffness(ok, long_addendum); }, "1.25");
 }
 
 TEST(KuangYangStiffness, FactoryRejectsTenTeethAndLargeShift) {
