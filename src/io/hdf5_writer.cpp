@@ -256,6 +256,23 @@ void Hdf5Writer::SetAttribute(const std::string& object,
   WriteStringAttribute(obj.get(), name + "_unit", unit);
 }
 
+void Hdf5Writer::SetIntAttribute(const std::string& object,
+                                 const std::string& name,
+                                 long long value) {
+  Hdf5Lock lock(internal::Hdf5LibraryMutex());
+  impl_->Require();
+  Handle obj(H5Oopen(impl_->file, object.c_str(), H5P_DEFAULT), H5Oclose);
+  if (!obj.ok()) Fail("no object " + object + " for attribute " + name);
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  if (H5Aexists(obj.get(), name.c_str()) > 0) H5Adelete(obj.get(), name.c_str());
+  Handle attr(
+      H5Acreate2(obj.get(), name.c_str(), H5T_STD_I64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+      H5Aclose);
+  if (!attr.ok() || H5Awrite(attr.get(), H5T_NATIVE_LLONG, &value) < 0)
+    Fail("cannot write attribute " + name);
+  WriteStringAttribute(obj.get(), name + "_unit", "-");
+}
+
 void Hdf5Writer::Commit() {
   Hdf5Lock lock(internal::Hdf5LibraryMutex());
   impl_->Require();

@@ -108,8 +108,8 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
   h5.SetAttribute("/", "step_rule", r.step_rule);
   h5.SetAttribute("/", "grid_rule", r.grid_rule);
   h5.SetAttribute("/", "wall_time", r.wall_time_s, "s");
-  h5.SetAttribute("/", "resumed_from_step", static_cast<double>(r.resumed_from_step), "-");
-  h5.SetAttribute("/", "steady_restarts", static_cast<double>(r.Restarts()), "-");
+  h5.SetIntAttribute("/", "resumed_from_step", r.resumed_from_step);
+  h5.SetIntAttribute("/", "steady_restarts", r.Restarts());
 
   for (const auto& c : CycleColumns())
     if (!c.thermal || r.thermal)
@@ -163,7 +163,7 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
   h5.SetAttribute("/cycle", "u0", r.u0_m_s, "m/s");
   h5.SetAttribute("/cycle", "w0", r.w0_n_per_m, "N/m");
   h5.SetAttribute("/cycle", "T0", r.inlet_temperature_k, "K");
-  h5.SetAttribute("/cycle", "planned_steps", r.planned_steps, "-");
+  h5.SetIntAttribute("/cycle", "planned_steps", r.planned_steps);
 
   h5.WriteVector("/profiles/x", r.x_m, "m", "grid nodes, x = 0 at the contact point");
   h5.SetAttribute("/profiles", "b_max", r.max_half_width_m, "m");
@@ -187,7 +187,7 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
                    static_cast<int>(r.x_m.size()) * r.film_nodes, "K",
                    "film temperature over (step, x, z): row k holds T(x_i, z_j) at index "
                    "i * film_nodes + j, z_j = j h / (film_nodes - 1) from the pinion surface");
-    h5.SetAttribute("/profiles/T", "film_nodes", static_cast<double>(r.film_nodes), "-");
+    h5.SetIntAttribute("/profiles/T", "film_nodes", r.film_nodes);
   }
 
   std::vector<std::string> termination, message, restart_reason;
@@ -270,6 +270,27 @@ void WriteMeshCycleCsv(const std::string& path, const MeshCycleResult& r) {
   }
   table.push_back({"substeps", substeps, true});
   table.push_back({"time_error", time_error});
+  // The numeric /cycle columns of the film's resolution, as in the HDF5 file (-1: none).
+  std::vector<double> pairs;
+  for (const MeshCycleStep& k : r.steps) pairs.push_back(k.pairs_in_contact);
+  table.push_back({"pairs_in_contact", pairs, true});
+  if (r.p_pa.size() == r.steps.size()) {
+    std::vector<double> cells;
+    for (const OutletSpike& spike : r.OutletSpikes())
+      cells.push_back(spike.found ? spike.width_cells : -1.0);
+    table.push_back({"spike_cells", cells});
+  }
+  {
+    std::vector<double> cells;
+    for (const HertzEdge& e : r.HertzEdges()) cells.push_back(e.width_m > 0 ? e.width_cells : -1.0);
+    if (cells.size() == r.steps.size()) table.push_back({"edge_cells", cells});
+  }
+  if (r.p_pa.size() == r.steps.size() && r.h_m.size() == r.steps.size()) {
+    std::vector<double> deficit;
+    for (const InletTruncation& t : r.InletTruncations())
+      deficit.push_back(t.estimated ? t.film_deficit : -1.0);
+    table.push_back({"inlet_deficit", deficit});
+  }
   WriteCsvTable(path, table);
 }
 

@@ -163,7 +163,7 @@ TEST(MeshCycleResults, FileMatchesDocsResultsMd) {
   EXPECT_EQ(header,
             "s_m,t_s,R_m,u1_m_s,u2_m_s,um_m_s,SRR,w_n_per_m,w_static_n_per_m,h_min_m,h_c_m,"
             "p_max_pa,mu,dT_flash_blok_k,C_RT,C_UT,C_WT,converged,steady_restart,substeps,"
-            "time_error");
+            "time_error,pairs_in_contact,spike_cells,edge_cells,inlet_deficit");
   int rows = 0;
   while (std::getline(csv, line)) ++rows;
   EXPECT_EQ(rows, 13);

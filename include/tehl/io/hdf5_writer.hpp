@@ -58,6 +58,8 @@ class Hdf5Writer {
                     const std::string& name,
                     double value,
                     const std::string& unit);
+  // An integer attribute (a count: 64-bit signed), its unit in `<name>_unit` ("-").
+  void SetIntAttribute(const std::string& object, const std::string& name, long long value);
 
   // Flushes, closes and renames `<final_path>.part` to `<final_path>`. Throws
   // std::runtime_error when that fails. Nothing may be written afterwards.
