@@ -162,23 +162,26 @@ Command AddLubricantCommand(CLI::App& app) {
           }
 
         std::cout << lube.Describe() << "  file: " << path << "\n\n";
-        std::printf("%10s %9s %14s %13s %12s %16s\n", "p [MPa]", "T [K]", "eta [Pa s]",
-                    "rho [kg/m^3]", "k [W/(m K)]", "dln(eta)/dp");
-        std::printf("%10s %9s %14s %13s %12s %16s\n", "", "", "", "", "", "[1/GPa]");
-        if (csv) csv << "p_pa,T_k,eta_pa_s,rho_kg_m3,k_w_mk,dln_eta_dp_per_pa\n";
+        // nu = eta / rho in mm^2/s (cSt), the unit of oil data sheets.
+        std::printf("%10s %9s %14s %13s %13s %12s %16s\n", "p [MPa]", "T [K]", "eta [Pa s]",
+                    "nu [mm^2/s]", "rho [kg/m^3]", "k [W/(m K)]", "dln(eta)/dp");
+        std::printf("%10s %9s %14s %13s %13s %12s %16s\n", "", "", "", "(cSt)", "", "", "[1/GPa]");
+        if (csv) csv << "p_pa,T_k,eta_pa_s,rho_kg_m3,k_w_mk,dln_eta_dp_per_pa,nu_m2_s\n";
         for (double t : T.Values()) {
           for (double pp : p.Values()) {
             const ViscosityValue eta = lube.viscosity().Evaluate(pp, t);
             const DensityValue rho = lube.density().Evaluate(pp, t);
             const ConductivityValue k = lube.conductivity().Evaluate(pp);
             const double alpha_loc = eta.deta_dp / eta.eta_pa_s;  // [1/Pa]
-            std::printf("%10.2f %9.2f %14.5e %13.3f %12.5f %16.4f\n", pp * 1e-6, t, eta.eta_pa_s,
-                        rho.rho_kg_m3, k.k_w_mk, alpha_loc * 1e9);
+            const double nu = eta.eta_pa_s / rho.rho_kg_m3;       // [m^2/s]
+            std::printf("%10.2f %9.2f %14.5e %13.5g %13.3f %12.5f %16.4f\n", pp * 1e-6, t,
+                        eta.eta_pa_s, nu * 1e6, rho.rho_kg_m3, k.k_w_mk, alpha_loc * 1e9);
             if (csv)
               csv << internal::FormatReal(pp) << ',' << internal::FormatReal(t) << ','
                   << internal::FormatReal(eta.eta_pa_s) << ','
                   << internal::FormatReal(rho.rho_kg_m3) << ',' << internal::FormatReal(k.k_w_mk)
-                  << ',' << internal::FormatReal(alpha_loc) << '\n';
+                  << ',' << internal::FormatReal(alpha_loc) << ',' << internal::FormatReal(nu)
+                  << '\n';
           }
         }
         std::printf("\nHoupert pressure-viscosity coefficient alpha = %.5g 1/GPa\n",

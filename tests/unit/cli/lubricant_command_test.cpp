@@ -38,7 +38,7 @@ TEST(LubricantCommand, WritesTheTableAsCsvInSiUnits) {
   std::string header;
   const auto rows = CsvRows(testing::ReadAll(csv), &header);
   std::remove(csv.c_str());
-  EXPECT_EQ(header, "p_pa,T_k,eta_pa_s,rho_kg_m3,k_w_mk,dln_eta_dp_per_pa");
+  EXPECT_EQ(header, "p_pa,T_k,eta_pa_s,rho_kg_m3,k_w_mk,dln_eta_dp_per_pa,nu_m2_s");
   ASSERT_EQ(rows.size(), 6u);  // 2 temperatures x 3 pressures
   // Row 0: p = 0, T = T0 -> the Table 2 inlet values of seed 004 (VALIDATION.md section 5).
   EXPECT_EQ(rows[0][0], 0.0);
@@ -49,6 +49,9 @@ TEST(LubricantCommand, WritesTheTableAsCsvInSiUnits) {
   // Row 1: p = 0.5 GPa. Row 3: p = 0, T = 333.15 K: eta0 exp(-0.046 * 20) (gamma form).
   EXPECT_EQ(rows[1][0], 5e8);
   EXPECT_NEAR(rows[3][2] / 0.1140574, 0.39851904, 1e-8);
+  // The kinematic viscosity of the data sheets: nu = eta / rho, 0.1140574 / 879.625 =
+  // 1.29666e-4 m^2/s (129.7 cSt at 40 C).
+  EXPECT_NEAR(rows[0][6], 0.1140574 / 879.625, 1e-15);
 }
 
 TEST(LubricantCommand, BadRangesExitWithCodeTwoAndNameTheOption) {
