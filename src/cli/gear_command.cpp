@@ -203,9 +203,9 @@ void Stiffness(std::ostream& o, const internal::GearCase& c) {
     o << "  iso: not applicable: " << WhyNot(e) << "\n";
   }
   o << "  load sharing: " << ToString(c.load_sharing)
-    << (c.load_sharing == LoadSharing::kStiffness ? " (" + c.mesh_stiffness + ")" : std::string())
+    << (c.load_sharing != LoadSharing::kLinear ? " (" + c.mesh_stiffness + ")" : std::string())
     << "\n";
-  if (c.load_sharing == LoadSharing::kStiffness && c.pair_stiffness) {
+  if (c.load_sharing != LoadSharing::kLinear && c.pair_stiffness) {
     double lo = 1e300, hi = 0;
     for (const MeshCycleRow& row : internal::GearCaseCycle(c, 401)) {
       lo = std::min(lo, row.transmission_error_m);

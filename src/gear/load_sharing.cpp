@@ -8,12 +8,21 @@
 namespace tehl {
 
 std::string ToString(LoadSharing sharing) {
-  return sharing == LoadSharing::kLinear ? "linear" : "stiffness";
+  switch (sharing) {
+    case LoadSharing::kLinear:
+      return "linear";
+    case LoadSharing::kLoaded:
+      return "loaded";
+    case LoadSharing::kStiffness:
+      break;
+  }
+  return "stiffness";
 }
 
 std::optional<LoadSharing> LoadSharingFromString(const std::string& name) {
   if (name == "linear") return LoadSharing::kLinear;
   if (name == "stiffness") return LoadSharing::kStiffness;
+  if (name == "loaded") return LoadSharing::kLoaded;
   return std::nullopt;
 }
 

@@ -20,12 +20,16 @@ std::vector<MeshCycleRow> MeshCycle(const PathOfContact& path,
                                     const PairStiffnessFn& stiffness) {
   ProblemList problems;
   for (const auto& m : options.Validate()) problems.Add({"", 0, "mesh_cycle", "", m, ""});
-  if (options.load_sharing == LoadSharing::kStiffness && !stiffness)
-    problems.Add({"", 0, "gear.load_sharing", "\"stiffness\"",
+  const bool by_stiffness = options.load_sharing != LoadSharing::kLinear;
+  if (by_stiffness && !stiffness)
+    problems.Add({"", 0, "gear.load_sharing", "\"" + ToString(options.load_sharing) + "\"",
                   "stiffness load sharing needs a mesh stiffness model", "\"linear\""});
-  if (options.relief.Active() && options.load_sharing != LoadSharing::kStiffness)
+  if (options.relief.Active() && !by_stiffness)
     problems.Add({"", 0, "gear.load_sharing", ToString(options.load_sharing),
-                  "tip relief needs the stiffness load sharing", "\"stiffness\""});
+                  "tip relief needs the stiffness load sharing", "\"stiffness\" or \"loaded\""});
+  if (options.load_sharing == LoadSharing::kLoaded && !options.corner)
+    problems.Add({"", 0, "gear.load_sharing", "\"loaded\"",
+                  "the loaded sharing needs the pair's corner contact", "a CornerContact"});
   problems.ThrowIfAny();
 
   const double g = path.length_m();
@@ -52,9 +56,9 @@ std::vector<MeshCycleRow> MeshCycle(const PathOfContact& path,
     }
     if (options.load_sharing == LoadSharing::kLinear) {
       r.share = LinearLoadShare(path, q);
-    } else if (options.relief.Active()) {
-      const RelievedShare rs =
-          RelievedLoadShare(path, q, stiffness, options.relief, load.normal_force_n);
+    } else if (options.relief.Active() || options.load_sharing == LoadSharing::kLoaded) {
+      const RelievedShare rs = RelievedLoadShare(path, q, stiffness, options.relief,
+                                                 load.normal_force_n, options.corner);
       r.share = rs.share;
       r.transmission_error_m = rs.approach_m;
     } else if (r.mesh_stiffness_n_per_m > 0) {

@@ -26,21 +26,36 @@ double Approach(const std::vector<Pair>& pairs, double force) {
   return CommonApproach(k, gap, force);
 }
 
-// The pairs in contact when the tracked pair is at s, s itself among them.
+// The pairs in contact when the tracked pair is at s, s itself among them; with `corner`
+// also the pairs beyond A and E within its extension (their stiffness that of the pair at the
+// nearer end, their separation the corner's plus the relief at that tip).
 std::vector<Pair> PairsAt(const PathOfContact& path,
                           double s,
                           const PairStiffnessFn& k,
-                          const TipRelief& relief) {
+                          const TipRelief& relief,
+                          const CornerContact* corner) {
   std::vector<Pair> pairs;
   bool found = false;
+  const double g = path.length_m();
   for (double q : path.SimultaneousContacts(s)) {
     const ContactPoint c = path.At(q);
-    pairs.push_back({q, k(c.r1_m, c.r2_m), relief.GapAt(q, path.length_m())});
+    pairs.push_back({q, k(c.r1_m, c.r2_m), relief.GapAt(q, g)});
     if (q == s) found = true;
   }
   if (!found) {  // s off the path (beyond the round-off guard of A and E)
     const ContactPoint c = path.At(s);
-    pairs.push_back({s, k(c.r1_m, c.r2_m), relief.GapAt(s, path.length_m())});
+    pairs.push_back({s, k(c.r1_m, c.r2_m), relief.GapAt(s, g)});
+  }
+  if (corner) {
+    const double pb = path.base_pitch_m();
+    const double lo = -corner->before_m(), hi = g + corner->after_m();
+    for (int j = static_cast<int>(std::ceil((lo - s) / pb)); s + j * pb <= hi; ++j) {
+      const double q = s + j * pb;
+      if (j == 0 || (q >= 0 && q <= g)) continue;  // the tracked pair and those on the path
+      const double end = std::clamp(q, 0.0, g);
+      const ContactPoint c = path.At(end);
+      pairs.push_back({q, k(c.r1_m, c.r2_m), corner->GapAt(q) + relief.GapAt(end, g)});
+    }
   }
   return pairs;
 }
@@ -96,8 +111,9 @@ RelievedShare RelievedLoadShare(const PathOfContact& path,
                                 double s,
                                 const PairStiffnessFn& k,
                                 const TipRelief& relief,
-                                double force) {
-  const std::vector<Pair> pairs = PairsAt(path, s, k, relief);
+                                double force,
+                                const CornerContact* corner) {
+  const std::vector<Pair> pairs = PairsAt(path, s, k, relief, corner);
   RelievedShare out;
   out.approach_m = Approach(pairs, force);
   for (const Pair& p : pairs)
@@ -112,8 +128,9 @@ double ApproachWithoutPair(const PathOfContact& path,
                            double s,
                            const PairStiffnessFn& k,
                            const TipRelief& relief,
-                           double force) {
-  std::vector<Pair> pairs = PairsAt(path, s, k, relief);
+                           double force,
+                           const CornerContact* corner) {
+  std::vector<Pair> pairs = PairsAt(path, s, k, relief, corner);
   pairs.erase(std::remove_if(pairs.begin(), pairs.end(), [s](const Pair& p) { return p.s == s; }),
               pairs.end());
   return pairs.empty() ? std::numeric_limits<double>::infinity() : Approach(pairs, force);
@@ -123,11 +140,12 @@ LoadedPath LoadedPathOf(const PathOfContact& path,
                         const PairStiffnessFn& k,
                         const TipRelief& relief,
                         double force,
-                        double min_share) {
+                        double min_share,
+                        const CornerContact* corner) {
   const double g = path.length_m();
   if (!relief.Active()) return {0.0, g};
   auto loaded = [&](double s) {
-    return RelievedLoadShare(path, s, k, relief, force).share >= min_share;
+    return RelievedLoadShare(path, s, k, relief, force, corner).share >= min_share;
   };
   const int n = 400;
   std::vector<bool> on(n + 1);

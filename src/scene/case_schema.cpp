@@ -32,8 +32,10 @@ SectionSpec GearSection() {
           Flag("allow_undercut", "false", "accept undercut teeth instead of rejecting them"),
           Text("mesh_stiffness", "\"potential_energy\"", "mesh stiffness method",
                {"potential_energy", "kuang_yang", "iso"}),
-          Text("load_sharing", "\"stiffness\"", "how the load is split between tooth pairs",
-               {"stiffness", "linear"}),
+          Text("load_sharing", "\"stiffness\"",
+               "how the load is split between tooth pairs (loaded: stiffness, with the corner "
+               "contact of loaded teeth beyond A and E)",
+               {"stiffness", "linear", "loaded"}),
           Text("tip_relief_shape", "\"linear\"",
                "shape of the tip reliefs of [gear.pinion] and [gear.wheel] along the line of "
                "action (ISO 21771), unless a gear gives its own",

@@ -59,7 +59,8 @@ DynamicsCase ReadDynamicsCase(Document& doc, const GearCase& c) {
 
   // Corner contact is followed out to a separation of 0.05 m_n (0.1 mm at m_n = 2 mm: some
   // ten times the static approach of ordinary gears; corner_contact.hpp).
-  if (doc.Bool("dynamics", "corner_contact")) d.corner_max_gap_m = 0.05 * pair.spec().module_m;
+  if (doc.Bool("dynamics", "corner_contact"))
+    d.corner_max_gap_m = kCornerMaxGapModules * pair.spec().module_m;
 
   DynamicResponseOptions& o = d.options;
   o.relative_tolerance = doc.Real("dynamics", "relative_tolerance");
@@ -116,8 +117,10 @@ bool RelievedPairStaysLoaded(Document& doc, const GearCase& c, const DynamicLoad
     const double s = begin + (end - begin) * i / 400;
     for (bool left : {true, false}) {
       const double q = left ? std::max(s - nudge, 0.0) : std::min(s + nudge, g);
-      const double share = RelievedLoadShare(path, q, c.pair_stiffness, c.tip_relief, force).share *
-                           load.LoadFactorAt(s, left);
+      const double share =
+          RelievedLoadShare(path, q, c.pair_stiffness, c.tip_relief, force, c.corner_contact.get())
+              .share *
+          load.LoadFactorAt(s, left);
       if (!(share >= min_share)) {
         min_share = share;
         s_min = s;

@@ -119,9 +119,9 @@ bool CheckTipReliefKeys(Document& doc, const GearCase& c, double g) {
     }
   }
   if (!r.Active()) return ok;
-  if (c.load_sharing != LoadSharing::kStiffness) {
+  if (c.load_sharing == LoadSharing::kLinear) {
     doc.Problem("gear", "load_sharing", "tip relief shares the load by the pair stiffnesses",
-                "load_sharing = \"stiffness\"");
+                "load_sharing = \"stiffness\" or \"loaded\"");
     ok = false;
   }
   return ok;
@@ -134,11 +134,13 @@ void FindLoadedPath(Document& doc, GearCase& c) {
   const PathOfContact path(*c.pair, c.operating.pinion_speed_rad_s);
   const double force = NominalToothLoad(*c.pair, c.operating).normal_force_n;
   const double g = path.length_m();
-  c.loaded_path = LoadedPathOf(path, c.pair_stiffness, c.tip_relief, force, kMinFilmShare);
+  const CornerContact* corner = c.corner_contact.get();
+  c.loaded_path = LoadedPathOf(path, c.pair_stiffness, c.tip_relief, force, kMinFilmShare, corner);
   // The largest amounts that keep the pair loaded to A and to E at this load.
-  c.relief_limit_a_m = ApproachWithoutPair(path, 0.0, c.pair_stiffness, c.tip_relief, force) -
-                       (c.tip_relief.GapAt(0.0, g) - c.tip_relief.wheel_amount_m);
-  c.relief_limit_e_m = ApproachWithoutPair(path, g, c.pair_stiffness, c.tip_relief, force) -
+  c.relief_limit_a_m =
+      ApproachWithoutPair(path, 0.0, c.pair_stiffness, c.tip_relief, force, corner) -
+      (c.tip_relief.GapAt(0.0, g) - c.tip_relief.wheel_amount_m);
+  c.relief_limit_e_m = ApproachWithoutPair(path, g, c.pair_stiffness, c.tip_relief, force, corner) -
                        (c.tip_relief.GapAt(g, g) - c.tip_relief.pinion_amount_m);
   if (!c.loaded_path.empty()) return;
   const bool wheel = c.tip_relief.wheel_amount_m >= c.tip_relief.pinion_amount_m;
@@ -307,6 +309,9 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
   } catch (const InputError& e) {
     AddProblems(doc, e);
   }
+  if (c.load_sharing == LoadSharing::kLoaded)
+    c.corner_contact = std::make_shared<const CornerContact>(
+        pair, Flank::kDrive, kCornerMaxGapModules * pair.spec().module_m);
   if (!CheckTipReliefKeys(doc, c, path.length_m())) return c;
   if (c.tip_relief.Active() && c.pair_stiffness) FindLoadedPath(doc, c);
   if (doc.Bool("effects", "dynamic_load")) {
@@ -326,6 +331,7 @@ std::vector<MeshCycleRow> GearCaseCycle(const GearCase& c, int points) {
   o.points = points;
   o.load_sharing = c.load_sharing;
   o.relief = c.tip_relief;
+  o.corner = c.corner_contact.get();
   std::vector<MeshCycleRow> rows =
       MeshCycle(path, NominalToothLoad(*c.pair, c.operating), o, c.pair_stiffness);
   if (c.dynamic_load)

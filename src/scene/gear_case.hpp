@@ -32,6 +32,10 @@ inline constexpr double kMinFilmShare = 0.01;
 inline constexpr double kMinPitchLineSpeed = 1e-6;
 inline constexpr double kMaxPitchLineSpeed = 200.0;
 
+// How far corner contact is followed beyond A and E: to a separation of this many normal
+// modules (0.1 mm at m_n = 2 mm, some ten times the static approach of ordinary gears) [-].
+inline constexpr double kCornerMaxGapModules = 0.05;
+
 struct GearCase {
   GearPairSpec spec;
   std::optional<GearPair> pair;  // empty when the spec is unusable
@@ -50,6 +54,9 @@ struct GearCase {
   // gives no variation along the path). Empty when the method could not be built.
   PairStiffnessFn pair_stiffness;
   std::shared_ptr<const PairStiffnessModel> model;  // owner behind pair_stiffness
+  // load_sharing = "loaded": the pair's corner contact beyond A and E (corner_contact.hpp),
+  // followed to a separation of kCornerMaxGapModules m_n. Null otherwise.
+  std::shared_ptr<const CornerContact> corner_contact;
   std::vector<GeometryProblem> warnings;            // geometry warnings, for the report
   // [effects] dynamic_load: the periodic torsional response at the case's speed; the cycle's
   // w(s) is the static w(s) times its LoadFactorAt(s). Null when the effect is off.

@@ -35,9 +35,10 @@ PathState CyclePath::At(double s, bool left) const {
   double share = 0;
   if (gear_.load_sharing == LoadSharing::kLinear)
     share = LinearLoadShare(path_, q);
-  else if (gear_.tip_relief.Active())
-    share =
-        RelievedLoadShare(path_, q, gear_.pair_stiffness, gear_.tip_relief, normal_force_n_).share;
+  else if (gear_.tip_relief.Active() || gear_.load_sharing == LoadSharing::kLoaded)
+    share = RelievedLoadShare(path_, q, gear_.pair_stiffness, gear_.tip_relief, normal_force_n_,
+                              gear_.corner_contact.get())
+                .share;
   else
     share = StiffnessLoadShare(path_, q, gear_.pair_stiffness);
   st.static_load_n_per_m = share * w_nominal_;

@@ -9,6 +9,10 @@
 // kStiffness: share(s) = k(s) / sum_j k(s + j p_b) over the pairs in contact at that
 // instant, k the pair stiffness at the contact radii (equal deflection of parallel pairs,
 // no profile errors or modifications).
+// kLoaded: the stiffness sharing of the loaded teeth: the pairs close one common approach
+// under F_bt, and pairs beyond A and E join by corner contact where the approach exceeds the
+// separation of their tip corner (corner_contact.hpp; tip_relief.hpp RelievedLoadShare), so
+// the share changes smoothly where the stepped kStiffness share jumps at B and D.
 #pragma once
 
 #include <functional>
@@ -19,8 +23,8 @@
 
 namespace tehl {
 
-enum class LoadSharing { kStiffness, kLinear };
-std::string ToString(LoadSharing sharing);  // "stiffness" | "linear"
+enum class LoadSharing { kStiffness, kLinear, kLoaded };
+std::string ToString(LoadSharing sharing);  // "stiffness" | "linear" | "loaded"
 std::optional<LoadSharing> LoadSharingFromString(const std::string& name);
 
 // Stiffness of one tooth pair in contact at radius r1 on the pinion and r2 on the wheel,

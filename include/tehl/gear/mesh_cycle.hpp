@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "tehl/gear/corner_contact.hpp"
 #include "tehl/gear/load_sharing.hpp"
 #include "tehl/gear/operating_point.hpp"
 #include "tehl/gear/path_of_contact.hpp"
@@ -15,8 +16,11 @@ namespace tehl {
 
 struct MeshCycleOptions {
   int points = 201;                                 // samples from A to E inclusive [-], >= 2
-  LoadSharing load_sharing = LoadSharing::kLinear;  // kStiffness needs a PairStiffnessFn
-  TipRelief relief;  // tip relief (tip_relief.hpp); needs kStiffness when Active()
+  LoadSharing load_sharing = LoadSharing::kLinear;  // kStiffness, kLoaded need a PairStiffnessFn
+  TipRelief relief;  // tip relief (tip_relief.hpp); needs kStiffness or kLoaded when Active()
+  // kLoaded: the corner contact of the pair (corner_contact.hpp); not owned, must outlive the
+  // call [-].
+  const CornerContact* corner = nullptr;
   std::vector<std::string> Validate() const;        // every violated rule; empty = valid
 };
 

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "tehl/gear/corner_contact.hpp"
 #include "tehl/gear/load_sharing.hpp"
 #include "tehl/gear/path_of_contact.hpp"
 
@@ -53,11 +54,14 @@ struct RelievedShare {
 // Load share of the pair at s in [0, g_alpha] with tip relief, under the normal force
 // F_bt [N] > 0 and the pair stiffness k [N/m] (per the full face width). Without relief it
 // equals StiffnessLoadShare.
+// With `corner` the pairs beyond A and E take part by corner contact (load_sharing kLoaded):
+// separation corner->GapAt(q) plus the relief at the tip, stiffness of the pair at the end.
 RelievedShare RelievedLoadShare(const PathOfContact& path,
                                 double s_m,
                                 const PairStiffnessFn& k,
                                 const TipRelief& relief,
-                                double normal_force_n);
+                                double normal_force_n,
+                                const CornerContact* corner = nullptr);
 
 // The approach the pairs other than the one at s need to carry F_bt on their own [m]: the
 // pair at s is loaded exactly when its relief gap is below this (the largest relief amount
@@ -66,7 +70,8 @@ double ApproachWithoutPair(const PathOfContact& path,
                            double s_m,
                            const PairStiffnessFn& k,
                            const TipRelief& relief,
-                           double normal_force_n);
+                           double normal_force_n,
+                           const CornerContact* corner = nullptr);
 
 // The part of the path where the tracked pair carries at least `min_share` of F_bt [m]:
 // [0, g_alpha] without relief; with relief a relief can lift the pair off near A (the wheel's
@@ -81,6 +86,7 @@ LoadedPath LoadedPathOf(const PathOfContact& path,
                         const PairStiffnessFn& k,
                         const TipRelief& relief,
                         double normal_force_n,
-                        double min_share);
+                        double min_share,
+                        const CornerContact* corner = nullptr);
 
 }  // namespace tehl
