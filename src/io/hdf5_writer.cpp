@@ -237,40 +237,40 @@ void Hdf5Writer::SetAttribute(const std::string& object,
   WriteStringAttribute(obj.get(), name, value);
 }
 
+static_assert(sizeof(hid_t) <= sizeof(long long), "hid_t is passed as long long");
+
+void Hdf5Writer::SetScalarAttribute(const std::string& object,
+                                    const std::string& name,
+                                    long long file_type,
+                                    long long memory_type,
+                                    const void* value,
+                                    const std::string& unit) {
+  Hdf5Lock lock(internal::Hdf5LibraryMutex());
+  impl_->Require();
+  Handle obj(H5Oopen(impl_->file, object.c_str(), H5P_DEFAULT), H5Oclose);
+  if (!obj.ok()) Fail("no object " + object + " for attribute " + name);
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  if (H5Aexists(obj.get(), name.c_str()) > 0) H5Adelete(obj.get(), name.c_str());
+  Handle attr(H5Acreate2(obj.get(), name.c_str(), static_cast<hid_t>(file_type), space.get(),
+                         H5P_DEFAULT, H5P_DEFAULT),
+              H5Aclose);
+  if (!attr.ok() || H5Awrite(attr.get(), static_cast<hid_t>(memory_type), value) < 0)
+    Fail("cannot write attribute " + name);
+  WriteStringAttribute(obj.get(), name + "_unit", unit);
+}
+
 void Hdf5Writer::SetAttribute(const std::string& object,
                               const std::string& name,
                               double value,
                               const std::string& unit) {
   CheckFinite(object + "@" + name, {value});
-  Hdf5Lock lock(internal::Hdf5LibraryMutex());
-  impl_->Require();
-  Handle obj(H5Oopen(impl_->file, object.c_str(), H5P_DEFAULT), H5Oclose);
-  if (!obj.ok()) Fail("no object " + object + " for attribute " + name);
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  if (H5Aexists(obj.get(), name.c_str()) > 0) H5Adelete(obj.get(), name.c_str());
-  Handle attr(
-      H5Acreate2(obj.get(), name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
-      H5Aclose);
-  if (!attr.ok() || H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value) < 0)
-    Fail("cannot write attribute " + name);
-  WriteStringAttribute(obj.get(), name + "_unit", unit);
+  SetScalarAttribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value, unit);
 }
 
 void Hdf5Writer::SetIntAttribute(const std::string& object,
                                  const std::string& name,
                                  long long value) {
-  Hdf5Lock lock(internal::Hdf5LibraryMutex());
-  impl_->Require();
-  Handle obj(H5Oopen(impl_->file, object.c_str(), H5P_DEFAULT), H5Oclose);
-  if (!obj.ok()) Fail("no object " + object + " for attribute " + name);
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  if (H5Aexists(obj.get(), name.c_str()) > 0) H5Adelete(obj.get(), name.c_str());
-  Handle attr(
-      H5Acreate2(obj.get(), name.c_str(), H5T_STD_I64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
-      H5Aclose);
-  if (!attr.ok() || H5Awrite(attr.get(), H5T_NATIVE_LLONG, &value) < 0)
-    Fail("cannot write attribute " + name);
-  WriteStringAttribute(obj.get(), name + "_unit", "-");
+  SetScalarAttribute(object, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, &value, "-");
 }
 
 void Hdf5Writer::Commit() {

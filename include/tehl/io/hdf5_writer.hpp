@@ -69,6 +69,14 @@ class Hdf5Writer {
   std::string temporary_path() const;  // final_path() + ".part"
 
  private:
+  // A scalar attribute of file type `file_type` from `value` in `memory_type` (hid_t values),
+  // with its unit in `<name>_unit`.
+  void SetScalarAttribute(const std::string& object,
+                          const std::string& name,
+                          long long file_type,
+                          long long memory_type,
+                          const void* value,
+                          const std::string& unit);
   class Impl;
   std::unique_ptr<Impl> impl_;
 };
