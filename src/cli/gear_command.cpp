@@ -146,6 +146,8 @@ void Path(std::ostream& o, const internal::GearCase& c) {
     << Fmt("%.2f", RadPerSToRpm(path.wheel_speed_rad_s()))
     << " rpm, T1 = " << Fmt("%.3f", c.operating.pinion_torque_nm)
     << " N m, P = " << Fmt("%.3f", c.power_w * 1e-3) << " kW\n";
+  if (c.speed_from_motor)
+    o << "  the pinion speed is the [motor]'s operating point under T1 (docs/trains.md)\n";
   o << "  normal load F_bt = T1 / r_b1 = " << Fmt("%.2f", load.normal_force_n)
     << " N, w = F_bt / b = " << Fmt("%.3f", load.load_per_width_n_per_m * 1e-3) << " kN/m\n";
 

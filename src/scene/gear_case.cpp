@@ -221,6 +221,7 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
     if (!w) return std::nullopt;
     c.operating.pinion_speed_rad_s = *w;
     c.power_w = c.operating.pinion_torque_nm * *w;
+    c.speed_from_motor = true;
   }
 
   try {

@@ -41,6 +41,7 @@ struct GearCase {
   std::optional<GearPair> pair;  // empty when the spec is unusable
   OperatingPoint operating;      // pinion speed and torque
   double power_w = 0;            // P = T1 w1 [W]
+  bool speed_from_motor = false;  // the pinion speed is the [motor]'s operating point
   LoadSharing load_sharing = LoadSharing::kStiffness;
   TipRelief tip_relief;        // [gear.pinion] / [gear.wheel] tip_relief_m, _length_m
   // Where the tracked pair carries at least kMinFilmShare of F_bt: the films of the mesh

@@ -209,6 +209,8 @@ TEST(CaseMotor, PinionSpeedComesFromTheMotorOperatingPoint) {
   ASSERT_TRUE(r.exited);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("(107.500 rad/s)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("the pinion speed is the [motor]'s operating point"), std::string::npos)
+      << r.out;
 }
 
 TEST(CaseMotor, SpeedInOperatingAndMotorIsGivenTwice) {
