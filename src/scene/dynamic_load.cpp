@@ -57,10 +57,17 @@ DynamicsCase ReadDynamicsCase(Document& doc, const GearCase& c) {
                            std::cos(pair.line(Flank::kDrive).working_pressure_angle_rad)
                      : doc.Real("dynamics", "backlash_m");
 
-  // Corner contact is followed out to a separation of 0.05 m_n (0.1 mm at m_n = 2 mm: some
-  // ten times the static approach of ordinary gears; corner_contact.hpp).
-  if (doc.Bool("dynamics", "corner_contact"))
-    d.corner_max_gap_m = kCornerMaxGapModules * pair.spec().module_m;
+  // Corner contact is followed out to CornerMaxGap (gear_case.hpp; corner_contact.hpp).
+  const bool corner = doc.Bool("dynamics", "corner_contact");
+  if (corner) d.corner_max_gap_m = CornerMaxGap(c);
+  // The film's dynamic load is the static share times the ratio of the tracked pair's
+  // dynamic to quasi-static load in this model: a static sharing with corner contact and a
+  // torsional model without it would apply the stepped model's spike on top of the ramp.
+  if (!corner && c.load_sharing == LoadSharing::kLoaded && doc.Bool("effects", "dynamic_load"))
+    doc.Problem("dynamics", "corner_contact",
+                "load_sharing = \"loaded\" shares the load with corner contact; the dynamic load "
+                "of the films needs the torsional model with it too",
+                "corner_contact = true (the default), or load_sharing = \"stiffness\"");
 
   DynamicResponseOptions& o = d.options;
   o.relative_tolerance = doc.Real("dynamics", "relative_tolerance");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <tuple>
 
@@ -159,6 +160,21 @@ void FindLoadedPath(Document& doc, GearCase& c) {
 
 }  // namespace
 
+double CornerMaxGap(const GearCase& c) {
+  const GearPair& pair = *c.pair;
+  double gap = kCornerMaxGapModules * pair.spec().module_m;
+  if (!c.pair_stiffness) return gap;
+  const PathOfContact path(pair, c.operating.pinion_speed_rad_s);
+  double k_min = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= 50; ++i) {
+    const ContactPoint p = path.At(path.length_m() * i / 50);
+    k_min = std::min(k_min, c.pair_stiffness(p.r1_m, p.r2_m));
+  }
+  const double force = NominalToothLoad(pair, c.operating).normal_force_n;
+  if (k_min > 0) gap = std::max(gap, kCornerApproachFactor * force / k_min);
+  return gap;
+}
+
 double GearCase::ReducedModulusPa() const {
   return ReducedModulus(spec.pinion.material.youngs_modulus_pa, spec.pinion.material.poisson_ratio,
                         spec.wheel.material.youngs_modulus_pa, spec.wheel.material.poisson_ratio);
@@ -311,8 +327,7 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
     AddProblems(doc, e);
   }
   if (c.load_sharing == LoadSharing::kLoaded)
-    c.corner_contact = std::make_shared<const CornerContact>(
-        pair, Flank::kDrive, kCornerMaxGapModules * pair.spec().module_m);
+    c.corner_contact = std::make_shared<const CornerContact>(pair, Flank::kDrive, CornerMaxGap(c));
   if (!CheckTipReliefKeys(doc, c, path.length_m())) return c;
   if (c.tip_relief.Active() && c.pair_stiffness) FindLoadedPath(doc, c);
   if (doc.Bool("effects", "dynamic_load")) {

@@ -33,8 +33,16 @@ inline constexpr double kMinPitchLineSpeed = 1e-6;
 inline constexpr double kMaxPitchLineSpeed = 200.0;
 
 // How far corner contact is followed beyond A and E: to a separation of this many normal
-// modules (0.1 mm at m_n = 2 mm, some ten times the static approach of ordinary gears) [-].
+// modules (0.1 mm at m_n = 2 mm, some ten times the static approach of ordinary gears) [-],
+// and at least kCornerApproachFactor times the approach of the softest single pair under
+// F_bt (dynamic approaches reach a few times the static one near resonance) [-].
 inline constexpr double kCornerMaxGapModules = 0.05;
+inline constexpr double kCornerApproachFactor = 10.0;
+
+struct GearCase;
+// The separation to which the case's corner contact is followed [m] (the larger of the two
+// rules above; needs the pair and its pair stiffness).
+double CornerMaxGap(const GearCase& c);
 
 struct GearCase {
   GearPairSpec spec;

@@ -79,6 +79,30 @@ TEST(DynamicsCase, BacklashOfAWiderCentreDistanceIsAlongTheLineOfAction) {
               jt * std::cos(c->pair->line(Flank::kDrive).working_pressure_angle_rad), 1e-15);
 }
 
+TEST(DynamicLoadEffect, LoadedSharingNeedsTheTorsionalModelWithCornerContact) {
+  // The film's dynamic load is the static share times the ratio of the tracked pair's
+  // dynamic to quasi-static load: with load_sharing = "loaded" (corner contact in the static
+  // sharing) and corner_contact = false in the torsional model, the stepped model's spike
+  // (x1.69 at A at 10 rpm) would be applied on top of a share that already ramps.
+  std::string text = Set(CaseText("seed004_sae40_dynamic"), "load_sharing", "\"loaded\"");
+  text = std::regex_replace(text, std::regex("\\[dynamics\\]\n"),
+                            "[dynamics]\ncorner_contact = false\n");
+  try {
+    Read(WriteCase(text, "loaded_no_corner"));
+    ADD_FAILURE() << "the case was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dynamics.corner_contact = false"), std::string::npos)
+        << e.what();
+  }
+  // With the corner contact in both (the default), it is accepted and quasi-static at 1 rpm.
+  std::string both = Set(CaseText("seed004_sae40_dynamic"), "load_sharing", "\"loaded\"");
+  both = Set(Set(both, "pinion_speed_rpm", "1.0"), "power_w", "10.0");
+  const internal::GearCase c = Read(WriteCase(both, "loaded_corner"));
+  ASSERT_TRUE(c.dynamic_load);
+  for (double s : {0.0, 0.3e-3, 5.0e-3, 10.0e-3})
+    EXPECT_NEAR(c.dynamic_load->LoadFactorAt(s, false), 1.0, 0.03) << "s " << s;
+}
+
 TEST(DynamicLoadEffect, CycleRowsCarryTheDynamicLoadAtTheCaseSpeed) {
   // Same case with and without the effect: every row's w is the static w times F/F_s of the
   // periodic response at that s, and at 1000 rpm (near f_n/8; dynamic load factor 1.14 with
