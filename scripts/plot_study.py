@@ -197,6 +197,10 @@ def main():
             x = np.array([ticks.index(value_text(v)) for v in x], dtype=float)
         else:
             ticks = None
+        # Lengths of roughness and relief (um) read better than tiny metres on the axis.
+        unit = text(f["parameters"][lab].attrs.get("unit", b""))
+        if ticks is None and unit == "m" and 0 < np.nanmax(np.abs(x)) < 1e-3:
+            x, unit = x * 1e6, "um"
         # One line per combination of the other varied parameters, along this one.
         others = [o for o in labels if o != lab]
         groups = {}
@@ -218,7 +222,6 @@ def main():
             ax.grid(alpha=0.3)
         if others:
             axes[0, 0].legend(fontsize=6)
-        unit = text(f["parameters"][lab].attrs.get("unit", b""))
         axes[-1, 0].set_xlabel(f"{lab} [{unit}]" if ticks is None else lab)
         if ticks is not None:
             axes[-1, 0].set_xticks(range(len(ticks)), ticks)
