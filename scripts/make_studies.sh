@@ -20,7 +20,7 @@ if [[ ! -x "$TEHL" ]]; then
 fi
 studies=("$@")
 if [[ ${#studies[@]} -eq 0 ]]; then
-  studies=(load speed lubricant tooth_form roughness_amplitude roughness_wavelength tip_relief
+  studies=(load speed lubricant load_sharing tooth_form roughness_amplitude roughness_wavelength tip_relief
     surface_temperature)
 fi
 mkdir -p "$OUT" docs/studies
