@@ -82,6 +82,13 @@ class GearCommand : public ::testing::Test {
     return p;
   }
 
+  // `tehl gear` on a case file `name` with the whole text `text`.
+  Result GearReport(const std::string& name, const std::string& text) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p) << text;
+    return Tehl("gear " + p.string());
+  }
+
   fs::path dir_;
 };
 
@@ -316,13 +323,13 @@ TEST_F(GearCommand, AsymmetricRackThatDoesNotFitExitsTwo) {
 // A high-contact-ratio pair (40/80, 18 deg, h_aP = 1.25: eps_alpha = 2.3032) has no single
 // contact zone: the report says so instead of a B-D length of 0 with B after D.
 TEST_F(GearCommand, AHighContactRatioPairHasNoSingleContactZone) {
-  const fs::path p = dir_ / "hcr.toml";
-  std::ofstream(p) << "[gear]\nmodule_m = 0.002\nface_width_m = 0.02\npressure_angle_deg = 18.0\n"
-                      "addendum_coefficient = 1.25\ndedendum_coefficient = 1.5\n"
-                      "root_fillet_coefficient = 0.25\n[gear.pinion]\nteeth = 40\n"
-                      "[gear.wheel]\nteeth = 80\n[operating]\npinion_speed_rpm = 1500.0\n"
-                      "power_w = 5000.0\n[lubricant]\nname = \"sae40\"\n";
-  const Result r = Tehl("gear " + p.string());
+  const Result r =
+      GearReport("hcr.toml",
+                 "[gear]\nmodule_m = 0.002\nface_width_m = 0.02\npressure_angle_deg = 18.0\n"
+                 "addendum_coefficient = 1.25\ndedendum_coefficient = 1.5\n"
+                 "root_fillet_coefficient = 0.25\n[gear.pinion]\nteeth = 40\n"
+                 "[gear.wheel]\nteeth = 80\n[operating]\npinion_speed_rpm = 1500.0\n"
+                 "power_w = 5000.0\n[lubricant]\nname = \"sae40\"\n");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("no single contact (eps_alpha = 2.3032 >= 2"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("single contact B-D"), std::string::npos) << r.out;
@@ -335,12 +342,12 @@ TEST_F(GearCommand, AHighContactRatioPairHasNoSingleContactZone) {
 // 0.123 m_n (the same on the wheel's tip), where the basic rack gives 0.25 m_n: a warning on
 // each member, and the run goes on.
 TEST_F(GearCommand, ATipClearanceLostToProfileShiftIsWarned) {
-  const fs::path p = dir_ / "khk.toml";
-  std::ofstream(p) << "[gear]\nmodule_m = 0.003\nface_width_m = 0.02\n[gear.pinion]\nteeth = 12\n"
-                      "profile_shift = 0.6\n[gear.wheel]\nteeth = 24\nprofile_shift = 0.36\n"
-                      "[operating]\npinion_speed_rpm = 1500.0\npower_w = 5000.0\n"
-                      "[lubricant]\nname = \"sae40\"\n";
-  const Result r = Tehl("gear " + p.string());
+  const Result r =
+      GearReport("khk.toml",
+                 "[gear]\nmodule_m = 0.003\nface_width_m = 0.02\n[gear.pinion]\nteeth = 12\n"
+                 "profile_shift = 0.6\n[gear.wheel]\nteeth = 24\nprofile_shift = 0.36\n"
+                 "[operating]\npinion_speed_rpm = 1500.0\npower_w = 5000.0\n"
+                 "[lubricant]\nname = \"sae40\"\n");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("warning: gear.pinion.profile_shift: the pinion tip clears the wheel's root "
                        "circle by only 0.3699 mm (0.123 m_n"),
@@ -353,12 +360,12 @@ TEST_F(GearCommand, ATipClearanceLostToProfileShiftIsWarned) {
 // An internal pair 20/24 (m = 3 mm, ring tip 34.5 mm) passes the checks on the line of action
 // but is warned of the interference outside it that a 4-tooth difference makes likely.
 TEST_F(GearCommand, AnInternalPairWithFewTeethDifferenceIsWarned) {
-  const fs::path p = dir_ / "ring.toml";
-  std::ofstream(p) << "[gear]\nmodule_m = 0.003\nface_width_m = 0.02\ninternal = true\n"
-                      "mesh_stiffness = \"iso\"\n[gear.pinion]\nteeth = 20\n[gear.wheel]\n"
-                      "teeth = 24\ntip_radius_m = 0.0345\n[operating]\npinion_speed_rpm = 1500.0\n"
-                      "power_w = 5000.0\n[lubricant]\nname = \"sae40\"\n";
-  const Result r = Tehl("gear " + p.string());
+  const Result r =
+      GearReport("ring.toml",
+                 "[gear]\nmodule_m = 0.003\nface_width_m = 0.02\ninternal = true\n"
+                 "mesh_stiffness = \"iso\"\n[gear.pinion]\nteeth = 20\n[gear.wheel]\n"
+                 "teeth = 24\ntip_radius_m = 0.0345\n[operating]\npinion_speed_rpm = 1500.0\n"
+                 "power_w = 5000.0\n[lubricant]\nname = \"sae40\"\n");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("warning: gear.wheel.teeth: the ring has only 4 teeth more than the pinion"),
             std::string::npos)
