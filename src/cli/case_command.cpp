@@ -52,9 +52,7 @@ Command AddCaseCommand(CLI::App& app) {
                   const internal::ContactInputs in = internal::ReadContact(doc);
                   if (doc.problems().empty()) internal::CheckFilmScale(doc, in, film);
                   if (doc.problems().empty()) {
-                    const internal::ContactGridPlan plan = internal::PlanContactGrid(in, film);
-                    internal::CheckRoughnessResolution(doc, film, plan.grid.dx_m());
-                    internal::CheckContactRoughSteps(doc, in, film, plan.grid.dx_m());
+                    const internal::ContactGridPlan plan = internal::PlanContactGrid(doc, in, film);
                     plan_text = "line contact on " + std::to_string(plan.grid.size()) + " nodes (" +
                                 plan.rule + ")";
                     if (!plan.inlet_note.empty()) plan_text += "\n  note: " + plan.inlet_note;

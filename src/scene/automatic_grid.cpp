@@ -145,14 +145,22 @@ std::string GridChoice::InletNote(const GridUnits& given) const {
   const double x0 = film_.x_start_b * units.inlet_m;
   const double deficit = WorstDeficit(x0);
   if (!(deficit > kInletNoteDeficit) || !(inlet_need_m_ > -x0)) return "";
-  char buf[400];
+  const int nodes = Grid(given).NodesFromStart(-inlet_need_m_);
+  char spacing[160];
+  if (nodes <= kMaxGridPoints)
+    std::snprintf(spacing, sizeof spacing, "with grid_points = %d keeps the spacing", nodes);
+  else
+    std::snprintf(spacing, sizeof spacing,
+                  "keeps the spacing with %d nodes, more than grid_points allows (%d)", nodes,
+                  kMaxGridPoints);
+  char buf[480];
   std::snprintf(buf, sizeof buf,
                 "the inlet at x = %.3g mm thins the films by up to %.1f %% (Grubin's estimate "
-                "before solving); one at %.3g mm keeps it below %.1f %%: x_start_b = %.3g with "
-                "grid_points = %d keeps the spacing (the automatic grid, grid_points left out, "
-                "reaches as far with fewer nodes, so a coarser spacing)",
+                "before solving); one at %.3g mm keeps it below %.1f %%: x_start_b = %.3g %s "
+                "(the automatic grid, grid_points left out, reaches as far with fewer nodes, so "
+                "a coarser spacing)",
                 x0 * 1e3, 100 * deficit, -inlet_need_m_ * 1e3, 100 * kInletTargetDeficit,
-                film_.x_start_b * inlet_need_m_ / -x0, Grid(given).NodesFromStart(-inlet_need_m_));
+                film_.x_start_b * inlet_need_m_ / -x0, spacing);
   return buf;
 }
 

@@ -34,6 +34,8 @@ namespace tehl::internal {
 inline constexpr int kAutomaticGridMinNodes = 513;
 // The largest: a 16385-node film takes about 0.3 s cold and 40 MB (docs/performance.md) [-].
 inline constexpr int kAutomaticGridMaxNodes = 16385;
+// The most nodes [numerics] grid_points accepts (case_schema.cpp) [-].
+inline constexpr int kMaxGridPoints = 1000000;
 
 // The largest film deficit the automatic grid's inlet is sized for; below the inlet note's
 // 0.5 % (docs/results.md "The inlet note") with the prediction's scatter [-].

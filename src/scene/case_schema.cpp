@@ -2,6 +2,7 @@
 
 #include "base/schema.hpp"
 #include "drive/motor_schema.hpp"
+#include "scene/automatic_grid.hpp"
 
 namespace tehl {
 namespace {
@@ -159,7 +160,7 @@ SectionSpec NumericsSection() {
           Integer("grid_points", "-", "0",
                   "nodes across the contact; 0 = automatic: from 513 up to what the narrowest "
                   "Hertzian edge of the run needs (docs/case_format.md)",
-                  0.0, 1e6),
+                  0.0, kMaxGridPoints),
           Real("x_start_b", "-", "-4.5",
                "inlet end of the grid in Hertz half-widths b (rigid and light, nearly "
                "isoviscous films: longer units, docs/case_format.md)",

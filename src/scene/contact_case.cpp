@@ -5,6 +5,7 @@
 #include <string>
 
 #include "scene/automatic_grid.hpp"
+#include "scene/profile_memory.hpp"
 #include "tehl/units.hpp"
 
 namespace tehl::internal {
@@ -114,7 +115,7 @@ void CheckFilmScale(Document& doc, const ContactInputs& in, const FilmCase& film
   }
 }
 
-ContactGridPlan PlanContactGrid(const ContactInputs& in, const FilmCase& film) {
+ContactGridPlan PlanContactGrid(Document& doc, const ContactInputs& in, const FilmCase& film) {
   const double r = in.ReducedRadius();
   GridUnits units;
   GridChoice choice(film, in.e_prime);
@@ -128,6 +129,10 @@ ContactGridPlan PlanContactGrid(const ContactInputs& in, const FilmCase& film) {
   }
   ContactGridPlan plan{choice.Grid(units), choice.Rule(units), choice.InletNote(units), {}};
   plan.input_notes = InputNotes(film, plan.grid.dx_m(), plan.grid.size());
+  CheckRoughnessResolution(doc, film, plan.grid.dx_m());
+  CheckContactRoughSteps(doc, in, film, plan.grid.dx_m());
+  CheckProfileMemory(doc, film, plan.grid.size(), in.steps > 0 ? in.steps + 1LL : 1LL,
+                     /*journal=*/false, "contact", "steps", plan.input_notes);
   return plan;
 }
 

@@ -36,7 +36,10 @@ struct ContactGridPlan {
   std::string inlet_note;  // GridChoice::InletNote: "" or the inlet's estimated cost
   std::vector<std::string> input_notes;  // InputNotes (film_case.hpp)
 };
-ContactGridPlan PlanContactGrid(const ContactInputs& in, const FilmCase& film);
+// Reports to `doc` what the grid cannot carry: roughness it does not resolve
+// (CheckRoughnessResolution, CheckContactRoughSteps) and profiles beyond the machine's memory
+// (profile_memory.hpp).
+ContactGridPlan PlanContactGrid(Document& doc, const ContactInputs& in, const FilmCase& film);
 
 // Moving roughness needs time steps that move the surfaces by at most one grid cell, dt um
 // <= dx, as a mesh cycle's (mesh_cycle_plan.cpp): a transient rough case with fewer `steps`

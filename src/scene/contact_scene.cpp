@@ -60,10 +60,8 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   doc.ThrowIfProblems();
 
   const double r = in.ReducedRadius();
-  const internal::ContactGridPlan plan = internal::PlanContactGrid(in, film);
+  const internal::ContactGridPlan plan = internal::PlanContactGrid(doc, in, film);
   const UniformGrid& grid = plan.grid;
-  internal::CheckRoughnessResolution(doc, film, grid.dx_m());
-  internal::CheckContactRoughSteps(doc, in, film, grid.dx_m());
   doc.ThrowIfProblems();
   if (!ro.quiet && film.grid_points == 0 && grid.size() > internal::kAutomaticGridMinNodes)
     std::fprintf(stderr, "grid %d nodes (%s)\n", grid.size(), plan.rule.c_str());

@@ -6,6 +6,7 @@
 
 #include "scene/automatic_grid.hpp"
 #include "scene/dynamic_load.hpp"
+#include "scene/profile_memory.hpp"
 #include "tehl/gear/load_sharing.hpp"
 #include "tehl/gear/operating_point.hpp"
 #include "tehl/gear/tip_relief.hpp"
@@ -170,6 +171,8 @@ MeshCyclePlan PlanMeshCycle(Document& doc, const CyclePath& cycle, double e_prim
                   "clamped to 100..200%s",
                   transits, film.effects.roughness ? "; raised to dt <= dx/um (roughness)" : "");
   plan.step_rule = rule;
+  CheckProfileMemory(doc, film, grid.size(), static_cast<long long>(plan.s_steps.size()),
+                     /*journal=*/true, "numerics", "steps", plan.input_notes);
   return plan;
 }
 

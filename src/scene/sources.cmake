@@ -14,6 +14,7 @@ list(APPEND TEHL_SOURCES
   src/scene/mesh_cycle_checkpoint_reader.cpp
   src/scene/checkpoint_codec.cpp
   src/scene/mesh_cycle_plan.cpp
+  src/scene/profile_memory.cpp
   src/scene/mesh_cycle_scene.cpp
   src/scene/step_restart.cpp
   src/scene/study_case_text.cpp

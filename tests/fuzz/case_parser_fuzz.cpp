@@ -72,7 +72,7 @@ void CheckCase(const std::string& path) {
         PlanMeshCycle(doc, cycle, gear->ReducedModulusPa(), film);
       } else if (doc.problems().empty() && doc.HasSection("contact")) {
         const ContactInputs in = ReadContact(doc);
-        if (doc.problems().empty()) PlanContactGrid(in, film);
+        if (doc.problems().empty()) PlanContactGrid(doc, in, film);
       }
     }
     doc.ThrowIfProblems();
