@@ -229,6 +229,12 @@ mutation("unit_pressure_angle_rad")(wrong(F, "gear", "pressure_angle_deg", "0.34
                                           "pressure angle in radians for degrees"))
 mutation("unit_modulus_gpa")(wrong(G, "gear.pinion", "youngs_modulus_pa", "117.0",
                                    "Young's modulus in GPa (117) for Pa (117e9)"))
+mutation("unit_density_g_cm3")(wrong(G, "gear.pinion", "density_kg_m3", "7.85",
+                                     "solid density in g/cm^3 (7.85) for kg/m^3 (7850)"))
+mutation("unit_conductivity_w_mmk")(wrong(G, "gear.pinion", "conductivity_w_mk", "0.046",
+                                          "conductivity in W/(mm K) (0.046) for W/(m K) (46)"))
+mutation("unit_heat_capacity_kj")(wrong(G, "gear.wheel", "heat_capacity_j_kgk", "0.47",
+                                        "heat capacity in kJ/(kg K) (0.47) for J/(kg K) (470)"))
 mutation("unit_center_distance_mm")(wrong(F, "gear", "center_distance_m", "91.5",
                                           "centre distance in millimetres (91.5) for metres"))
 # Not in the corpus, because no rule rejects it: [contact] radius_1_m = 20.0 (mm for m) is a

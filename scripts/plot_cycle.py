@@ -217,7 +217,7 @@ def main():
             # Blok's estimate with the film's own mu (docs/thermal.md "Flash temperature").
             at.plot(s, cyc.attrs["T0"] + film_curve(cyc, "dT_flash_blok", failed) - 273.15, color="0.3",
                     lw=0.9, ls="-.", label=r"surface by Blok (film's $\mu$)" + model)
-        at.set_ylabel("temperature [C]")
+        at.set_ylabel("temperature [°C]")
         af.plot(s, film_curve(cyc, "mu", failed), color="C3", label=r"friction coefficient $\mu$")
         af.set_ylabel(r"$\mu$ [-]")
         srr = af.twinx()
@@ -248,7 +248,7 @@ def main():
             ax.plot(x, prof["T2"][k, :] - 273.15, color=color, ls=":", lw=0.9,
                     label=f"{label}: wheel surface")
         ax.set_xlabel("x [mm]")
-        ax.set_ylabel("temperature [C]")
+        ax.set_ylabel("temperature [°C]")
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7, ncol=3)
         ax.set_title(f"{name}: temperature across the contact", fontsize=10)

@@ -187,6 +187,8 @@ class DocumentReader {
         rule += " (did you give degrees Celsius?)";
       if (k.unit == "Pa" && k.min == kMinModulusPa && x > 0 && x < kMinModulusPa)
         rule += " (did you give GPa or MPa? steel is 206e9 Pa)";
+      if (k.min && x < *k.min && x > 0) rule += k.below_hint;
+      if (k.max && x > *k.max) rule += k.above_hint;
       // A 0 for "none" where leaving the key out says it (radius_2_m: absent = a flat plane).
       if (const size_t a = k.meaning.find("absent = "); x == 0 && a != std::string::npos)
         rule += " (" + k.meaning.substr(a) + ": leave the key out)";

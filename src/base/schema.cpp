@@ -232,6 +232,34 @@ KeySpec Modulus(std::string name, std::string def, std::string meaning) {
   return Real(std::move(name), "Pa", std::move(def), std::move(meaning), kMinModulusPa, 2e12);
 }
 
+namespace {
+KeySpec WithHints(KeySpec k, std::string below, std::string above) {
+  k.below_hint = std::move(below);
+  k.above_hint = std::move(above);
+  return k;
+}
+}  // namespace
+
+// Ranges: polymers (PTFE 0.25 W/(m K), 1000-2200 kg/m^3, c up to about 2000 J/(kg K)) to
+// tungsten carbide (15600 kg/m^3), copper (400 W/(m K)) and diamond (about 2000 W/(m K)).
+KeySpec SolidDensity(std::string name, std::string def, std::string meaning) {
+  return WithHints(
+      Real(std::move(name), "kg/m^3", std::move(def), std::move(meaning), 500.0, 25000.0),
+      " (did you give g/cm^3? steel is 7850 kg/m^3)", " (steel is 7850 kg/m^3)");
+}
+
+KeySpec SolidConductivity(std::string name, std::string def, std::string meaning) {
+  return WithHints(
+      Real(std::move(name), "W/(m K)", std::move(def), std::move(meaning), 0.05, 2000.0),
+      " (did you give W/(mm K)? steel is 46 W/(m K))", " (steel is 46 W/(m K))");
+}
+
+KeySpec SolidHeatCapacity(std::string name, std::string def, std::string meaning) {
+  return WithHints(
+      Real(std::move(name), "J/(kg K)", std::move(def), std::move(meaning), 100.0, 5000.0),
+      " (did you give kJ/(kg K)? steel is 470 J/(kg K))", " (steel is 470 J/(kg K))");
+}
+
 KeySpec Required(KeySpec k, std::string example) {
   k.required = true;
   k.example = std::move(example);

@@ -34,6 +34,9 @@ struct KeySpec {
   bool max_inclusive = true;
   std::vector<std::string> choices;  // allowed strings (kString); empty = any
   std::string example;               // shown by --print-default when there is no default
+  // Added to an out-of-range message below min / above max: the likely unit slip, e.g.
+  // " (did you give g/cm^3? steel is 7850 kg/m^3)"; "" = none.
+  std::string below_hint, above_hint;
 };
 
 struct SectionSpec {
@@ -76,6 +79,13 @@ KeySpec Reals(std::string name,
 KeySpec Temperature(std::string name, std::string default_toml, std::string meaning);  // K > 200
 inline constexpr double kMinModulusPa = 1e6;  // smallest Young's modulus accepted [Pa]
 KeySpec Modulus(std::string name, std::string default_toml, std::string meaning);  // Pa, 1e6..2e12
+// Thermal properties of a solid body, bounded by engineering solids from polymers to
+// diamond, with the unit slips they catch named in the message: density 500 .. 25000 kg/m^3
+// (g/cm^3), conductivity 0.05 .. 2000 W/(m K) (W/(mm K)), heat capacity
+// 100 .. 5000 J/(kg K) (kJ/(kg K)).
+KeySpec SolidDensity(std::string name, std::string default_toml, std::string meaning);
+KeySpec SolidConductivity(std::string name, std::string default_toml, std::string meaning);
+KeySpec SolidHeatCapacity(std::string name, std::string default_toml, std::string meaning);
 KeySpec Required(KeySpec k, std::string example);  // marks k required, with an example value
 
 using Value = std::variant<std::monostate, bool, long long, double, std::string,

@@ -100,9 +100,13 @@ std::string ContactProfileCsv(const std::string& file,
                               const std::vector<double>& x_m,
                               const std::vector<double>& p_pa,
                               const std::vector<double>& h_m,
-                              const std::vector<double>& t_mid_k) {
+                              const std::vector<double>& t_mid_k,
+                              const std::vector<double>& t1_k,
+                              const std::vector<double>& t2_k) {
   std::vector<Column> cols = {{"x_m", x_m}, {"p_pa", p_pa}, {"h_m", h_m}};
   if (!t_mid_k.empty()) cols.push_back({"t_mid_k", t_mid_k});
+  if (!t1_k.empty()) cols.push_back({"t1_k", t1_k});
+  if (!t2_k.empty()) cols.push_back({"t2_k", t2_k});
   for (const Column& c : cols)
     if (c.values.size() != x_m.size())
       throw std::runtime_error("CSV " + file + ": column " + c.header + " has " +

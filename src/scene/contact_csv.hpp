@@ -17,12 +17,15 @@ namespace tehl::internal {
 // Throws NonFiniteError ("... CSV <file> column <name>[<row>] = nan") at the first NaN or Inf.
 std::string ContactStepsCsv(const std::string& file, const std::vector<ContactStepRecord>& steps);
 
-// NAME_profile.csv: x_m,p_pa,h_m per node, and t_mid_k (mid-film temperature [K]) when
-// t_mid_k is not empty (thermal runs; same size as x_m). Throws NonFiniteError like above.
+// NAME_profile.csv: x_m,p_pa,h_m per node, then t_mid_k, t1_k, t2_k (mid-film and the two
+// bodies' surface temperatures [K]) for those not empty (thermal runs; same size as x_m).
+// Throws NonFiniteError like above.
 std::string ContactProfileCsv(const std::string& file,
                               const std::vector<double>& x_m,
                               const std::vector<double>& p_pa,
                               const std::vector<double>& h_m,
-                              const std::vector<double>& t_mid_k);
+                              const std::vector<double>& t_mid_k,
+                              const std::vector<double>& t1_k = {},
+                              const std::vector<double>& t2_k = {});
 
 }  // namespace tehl::internal

@@ -175,19 +175,22 @@ ContactRunResult RunContactCase(const std::string& case_path, const ContactRunOp
   result.profile_csv = profiles ? (dir / (name + "_profile.csv")).string() : std::string();
   result.history_csv = (dir / (name + "_steps.csv")).string();
   // Both texts are formatted (and every number checked) before either file is written.
-  std::vector<double> t_mid;  // mid-film temperature, as the mesh cycle's /profiles/T_mid
+  // Mid-film and surface temperatures, as the mesh cycle's /profiles/T_mid, T1, T2.
+  std::vector<double> t_mid, t1, t2;
   if (thermal && state.temperature.Matches(grid.size(), nz)) {
-    const Eigen::MatrixXd& tk = state.temperature.t_k;
-    const Eigen::VectorXd mid = 0.5 * (tk.col((nz - 1) / 2) + tk.col(nz / 2));
+    const FilmTemperature& t = state.temperature;
+    const Eigen::VectorXd mid = 0.5 * (t.t_k.col((nz - 1) / 2) + t.t_k.col(nz / 2));
     t_mid.assign(mid.data(), mid.data() + mid.size());
+    t1.assign(t.t1_k.data(), t.t1_k.data() + t.t1_k.size());
+    t2.assign(t.t2_k.data(), t.t2_k.data() + t.t2_k.size());
   }
   const std::string profile =
-      !profiles
-          ? std::string()
-          : internal::ContactProfileCsv(
-                result.profile_csv, grid.Nodes(),
-                std::vector<double>(state.p_pa.data(), state.p_pa.data() + state.p_pa.size()),
-                std::vector<double>(state.h_m.data(), state.h_m.data() + state.h_m.size()), t_mid);
+      !profiles ? std::string()
+                : internal::ContactProfileCsv(
+                      result.profile_csv, grid.Nodes(),
+                      std::vector<double>(state.p_pa.data(), state.p_pa.data() + state.p_pa.size()),
+                      std::vector<double>(state.h_m.data(), state.h_m.data() + state.h_m.size()),
+                      t_mid, t1, t2);
   const std::string history = internal::ContactStepsCsv(result.history_csv, result.steps);
   // The steps file marks a finished run (a study's result file): it is written last.
   if (profiles) internal::WriteTextAtomically(result.profile_csv, profile);

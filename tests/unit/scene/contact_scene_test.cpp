@@ -332,13 +332,20 @@ TEST(ContactScene, ThermalRollingDiscIsHotterThanItsInletWithPositiveFriction) {
   EXPECT_GT(steps.At(0, "mu"), 0.0);
   EXPECT_GT(steps.At(0, "wall_time_s"), 0.0);
   const Csv profile = ReadCsv(r.profile_csv);
-  ASSERT_EQ(profile.head, (std::vector<std::string>{"x_m", "p_pa", "h_m", "t_mid_k"}));
+  ASSERT_EQ(profile.head,
+            (std::vector<std::string>{"x_m", "p_pa", "h_m", "t_mid_k", "t1_k", "t2_k"}));
   ASSERT_EQ(profile.rows.size(), 257u);
-  double t_mid_max = 0;
-  for (size_t i = 0; i < profile.rows.size(); ++i)
+  double t_mid_max = 0, t1_max = 0, t2_max = 0;
+  for (size_t i = 0; i < profile.rows.size(); ++i) {
     t_mid_max = std::max(t_mid_max, profile.At(i, "t_mid_k"));
+    t1_max = std::max(t1_max, profile.At(i, "t1_k"));
+    t2_max = std::max(t2_max, profile.At(i, "t2_k"));
+  }
   EXPECT_GT(t_mid_max, kInletK);
   EXPECT_LE(t_mid_max, s.t_max_k * (1 + 1e-9));
+  // The surface profiles' maxima are the steps file's (written from the same film, %.10g).
+  EXPECT_NEAR(t1_max, steps.At(0, "t1_max_k"), 1e-9 * t1_max);
+  EXPECT_NEAR(t2_max, steps.At(0, "t2_max_k"), 1e-9 * t2_max);
 }
 
 // The guard: a NaN or Inf is refused before any byte is formatted, naming file, column, row.
