@@ -84,22 +84,6 @@ std::string NearestName(const std::string& name, const std::vector<std::string>&
   return best;
 }
 
-std::string FormatShort(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", x);
-  return text;
-}
-
-std::string FormatReal(double x) {
-  if (std::isnan(x)) return "nan";
-  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  char buf[64];
-  auto r = std::to_chars(buf, buf + sizeof buf, x);
-  std::string s(buf, r.ptr);
-  if (s.find_first_of(".e") == std::string::npos) s += ".0";
-  return s;
-}
-
 std::string FormatValue(const Value& v) {
   struct V {
     std::string operator()(std::monostate) const { return ""; }

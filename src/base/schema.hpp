@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 
+#include "base/number_text.hpp"
 #include "tehl/error.hpp"
 
 namespace tehl::internal {
@@ -151,11 +152,9 @@ std::string UnitSuffix(const std::string& unit);  // " [m]", or "" without a uni
 std::string RangeText(const KeySpec& k);          // ">= 0 and < 1", or ""
 std::string AllowedText(const KeySpec& k);        // choices, or kind, range and unit
 
-std::string FormatReal(double x);     // shortest round-trip, valid TOML float
 // The name of `known` within two edits of `name` (a misspelt key), closest first; "" when
 // none is that close or `name` has fewer than 4 characters.
 std::string NearestName(const std::string& name, const std::vector<std::string>& known);
-std::string FormatShort(double x);    // 3 significant digits ("%.3g"), for messages
 std::string FormatValue(const Value& v);
 
 }  // namespace tehl::internal

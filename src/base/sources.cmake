@@ -2,6 +2,7 @@
 list(APPEND TEHL_SOURCES
   src/base/error.cpp
   src/base/units.cpp
+  src/base/number_text.cpp
   src/base/schema.cpp
   src/base/document.cpp
   src/base/toml_guard.cpp

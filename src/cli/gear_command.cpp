@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "io/atomic_file.hpp"
 #include "scene/case_reader.hpp"
 #include "scene/film_case.hpp"
 #include "scene/gear_case.hpp"
@@ -275,9 +276,7 @@ void WriteCsv(const std::string& file,
               int points,
               const FlashModel& m,
               std::optional<double> mu) {
-  std::ofstream out(file);
-  if (!out)
-    throw InputError(InputProblem{"", 0, "--csv", file, "cannot be written", "a writable path"});
+  std::ostringstream out;  // written atomically once complete
   out << "s_m,t_s,rho1_m,rho2_m,R_m,u1_m_s,u2_m_s,um_m_s,SRR,v_slide_m_s,k_pair_n_per_m,"
          "k_mesh_n_per_m,share,w_n_per_m,r1_m,r2_m,pairs_in_contact,ste_m"
       << (mu ? ",dT_flash_blok_k" : "") << "\n";
@@ -295,18 +294,17 @@ void WriteCsv(const std::string& file,
     if (mu) out << ',' << rise[i];
     out << '\n';
   }
+  internal::WriteTextAtomically(file, out.str());
 }
 
 void WriteProfile(const std::string& file, const GearPair& pair) {
-  std::ofstream out(file);
-  if (!out)
-    throw InputError(
-        InputProblem{"", 0, "--profile", file, "cannot be written", "a writable path"});
+  std::ostringstream out;  // written atomically once complete
   out << "gear,flank,x_m,y_m\n";
   out.precision(12);
   for (const ProfileCurve& curve : ToothProfile(pair))
     for (const ProfilePoint& p : curve.points)
       out << curve.gear << ',' << curve.flank << ',' << p.x_m << ',' << p.y_m << '\n';
+  internal::WriteTextAtomically(file, out.str());
 }
 
 }  // namespace

@@ -7,11 +7,13 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "base/schema.hpp"
 #include "cli/commands.hpp"
+#include "io/atomic_file.hpp"
 #include "lubricant/lubricant_schema.hpp"
 #include "scene/case_reader.hpp"
 #include "tehl/error.hpp"
@@ -31,12 +33,7 @@ struct Range {
   }
 };
 
-bool ParseNumber(const std::string& s, double* x) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  *x = std::strtod(s.c_str(), &end);
-  return end == s.c_str() + s.size() && std::isfinite(*x);
-}
+bool ParseNumber(const std::string& s, double* x) { return internal::ParseReal(s, x); }
 
 // "start:stop:count" or a single value; min/max bound every value (in the option's unit).
 Range ParseRange(const std::string& option,
@@ -133,14 +130,10 @@ Command AddLubricantCommand(CLI::App& app) {
                                    "start:stop:count with absolute temperatures in "
                                    "[200, 1000] K, e.g. --T 313:393:5",
                                    &problems);
-        std::ofstream csv;
-        if (!args->csv.empty()) {
-          csv.open(args->csv);
-          if (!csv)
-            problems.Add({"", 0, "--csv", "\"" + args->csv + "\"", "cannot write the file",
-                          "a writable path"});
-        }
         problems.ThrowIfAny();
+        // The table, written atomically once complete (a rejected input leaves no file).
+        const bool with_csv = !args->csv.empty();
+        std::ostringstream csv;
         // A law may leave the range of doubles inside the allowed pressures (Barus' exp(alpha
         // p) above about 700 / alpha): such a table is refused, not printed as inf and NaN.
         for (double t : T.Values())
@@ -166,7 +159,7 @@ Command AddLubricantCommand(CLI::App& app) {
         std::printf("%10s %9s %14s %13s %13s %12s %16s\n", "p [MPa]", "T [K]", "eta [Pa s]",
                     "nu [mm^2/s]", "rho [kg/m^3]", "k [W/(m K)]", "dln(eta)/dp");
         std::printf("%10s %9s %14s %13s %13s %12s %16s\n", "", "", "", "(cSt)", "", "", "[1/GPa]");
-        if (csv) csv << "p_pa,T_k,eta_pa_s,rho_kg_m3,k_w_mk,dln_eta_dp_per_pa,nu_m2_s\n";
+        if (with_csv) csv << "p_pa,T_k,eta_pa_s,rho_kg_m3,k_w_mk,dln_eta_dp_per_pa,nu_m2_s\n";
         for (double t : T.Values()) {
           for (double pp : p.Values()) {
             const ViscosityValue eta = lube.viscosity().Evaluate(pp, t);
@@ -176,7 +169,7 @@ Command AddLubricantCommand(CLI::App& app) {
             const double nu = eta.eta_pa_s / rho.rho_kg_m3;       // [m^2/s]
             std::printf("%10.2f %9.2f %14.5e %13.5g %13.3f %12.5f %16.4f\n", pp * 1e-6, t,
                         eta.eta_pa_s, nu * 1e6, rho.rho_kg_m3, k.k_w_mk, alpha_loc * 1e9);
-            if (csv)
+            if (with_csv)
               csv << internal::FormatReal(pp) << ',' << internal::FormatReal(t) << ','
                   << internal::FormatReal(eta.eta_pa_s) << ','
                   << internal::FormatReal(rho.rho_kg_m3) << ',' << internal::FormatReal(k.k_w_mk)
@@ -184,6 +177,7 @@ Command AddLubricantCommand(CLI::App& app) {
                   << '\n';
           }
         }
+        if (with_csv) internal::WriteTextAtomically(args->csv, csv.str());
         std::printf("\nHoupert pressure-viscosity coefficient alpha = %.5g 1/GPa\n",
                     lube.viscosity().PressureViscosityCoefficient() * 1e9);
         std::fflush(stdout);

@@ -4,6 +4,8 @@
 
 #include <Eigen/Sparse>
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "ehl/newton_system.hpp"
@@ -295,9 +297,16 @@ void FilmAugmentedPreconditioner::Solve(const Eigen::VectorXd& x, Eigen::VectorX
     d.upper.Backward(size, z);
     for (int k = 0; k < size; ++k) d.sol[d.perm_col[k]] = z[k];
   } else {
-    umfpack_di_wsolve(UMFPACK_A, d.matrix.outerIndexPtr(), d.matrix.innerIndexPtr(),
-                      d.matrix.valuePtr(), d.sol.data(), d.rhs.data(), d.numeric, d.control,
-                      nullptr, d.iwork.data(), d.work.data());
+    // After a factorization that succeeded (Factorize refuses a singular one) the solve has
+    // no failure of its own left: a status other than OK is a defect, not a hard film.
+    const int status = umfpack_di_wsolve(
+        UMFPACK_A, d.matrix.outerIndexPtr(), d.matrix.innerIndexPtr(), d.matrix.valuePtr(),
+        d.sol.data(), d.rhs.data(), d.numeric, d.control, nullptr, d.iwork.data(), d.work.data());
+    if (status != UMFPACK_OK)
+      throw std::runtime_error(
+          "newton_krylov: UMFPACK solve with the augmented preconditioner "
+          "failed (status " +
+          std::to_string(status) + ")");
   }
   y->resize(m + 1);
   y->head(m) = d.sol.head(m);

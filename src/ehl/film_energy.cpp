@@ -8,7 +8,7 @@
 #include <limits>
 #include <sstream>
 
-#include "base/schema.hpp"
+#include "base/number_text.hpp"
 #include "ehl/film_energy_system.hpp"
 #include "tehl/error.hpp"
 #include "tehl/lubricant/lubricant.hpp"

@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "base/schema.hpp"
+#include "base/number_text.hpp"
 #include "ehl/cross_film.hpp"
 #include "ehl/eyring_wall_stress.hpp"
 #include "tehl/error.hpp"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "base/schema.hpp"
+#include "base/number_text.hpp"
 #include "ehl/gmres.hpp"
 
 namespace tehl::internal {

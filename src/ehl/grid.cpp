@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "base/schema.hpp"
+#include "base/number_text.hpp"
 #include "tehl/ehl/film_effects.hpp"
 #include "tehl/error.hpp"
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "base/schema.hpp"
+#include "base/number_text.hpp"
 #include "ehl/film_field.hpp"
 #include "ehl/fixed_point_newton.hpp"
 #include "ehl/line_contact_impl.hpp"

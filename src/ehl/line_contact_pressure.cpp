@@ -10,7 +10,7 @@
 #include <string>
 #include <utility>
 
-#include "base/schema.hpp"
+#include "base/number_text.hpp"
 #include "ehl/line_contact_impl.hpp"
 #include "tehl/ehl/hertz_edge.hpp"
 #include "tehl/ehl/surface_roughness.hpp"

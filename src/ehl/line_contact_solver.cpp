@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "base/schema.hpp"
+#include "base/number_text.hpp"
 #include "ehl/line_contact_impl.hpp"
 #include "ehl/newton_system.hpp"
 #include "tehl/ehl/film_thickness_formulas.hpp"

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <utility>
 
+#include "base/number_text.hpp"
 #include "tehl/error.hpp"
 #include "tehl/units.hpp"
 
@@ -23,15 +24,7 @@ std::string Num(double v) {
 }
 
 // Strict number: the whole token must parse and be finite.
-bool ParseFinite(const std::string& token, double* out) {
-  if (token.empty()) return false;
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(token.c_str(), &end);
-  if (end != token.c_str() + token.size() || errno == ERANGE || !std::isfinite(v)) return false;
-  *out = v;
-  return true;
-}
+bool ParseFinite(const std::string& token, double* out) { return internal::ParseReal(token, out); }
 
 // The rules of a profile given as arrays (ReadFile checks the same rules line by line).
 void CheckPoints(const std::vector<double>& x,

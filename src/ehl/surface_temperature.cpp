@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "base/schema.hpp"
+#include "base/number_text.hpp"
 #include "tehl/ehl/moving_line_source.hpp"
 #include "tehl/error.hpp"
 

@@ -1,6 +1,6 @@
 #include "io/csv_table.hpp"
 
-#include <cstdio>
+#include <charconv>
 #include <filesystem>
 #include <stdexcept>
 
@@ -8,6 +8,14 @@
 #include "tehl/io/hdf5_writer.hpp"
 
 namespace tehl::internal {
+
+void AppendCsvCell(std::string* text, double value, bool integer) {
+  char cell[40];
+  const std::to_chars_result r =
+      integer ? std::to_chars(cell, cell + sizeof cell, value, std::chars_format::fixed, 0)
+              : std::to_chars(cell, cell + sizeof cell, value, std::chars_format::scientific, 9);
+  text->append(cell, r.ptr);
+}
 
 void WriteCsvTable(const std::string& path, const std::vector<CsvColumn>& columns) {
   const size_t rows = columns.empty() ? 0 : columns.front().values.size();
@@ -21,12 +29,10 @@ void WriteCsvTable(const std::string& path, const std::vector<CsvColumn>& column
   std::string text;
   for (size_t j = 0; j < columns.size(); ++j) text += (j ? "," : "") + columns[j].header;
   text += "\n";
-  char cell[40];
   for (size_t i = 0; i < rows; ++i) {
     for (size_t j = 0; j < columns.size(); ++j) {
-      std::snprintf(cell, sizeof cell, columns[j].integer ? "%s%.0f" : "%s%.9e", j ? "," : "",
-                    columns[j].values[i]);
-      text += cell;
+      if (j) text += ',';
+      AppendCsvCell(&text, columns[j].values[i], columns[j].integer);
     }
     text += "\n";
   }

@@ -13,6 +13,11 @@ struct CsvColumn {
   bool integer = false;        // counts and flags: written without a fraction ("%.0f")
 };
 
+// Appends `value` to `text` as a CSV cell: "%.9e" (or "%.0f" when `integer`) in the C
+// locale whatever the process's locale is (std::to_chars), so that a library user's decimal
+// comma never ends up inside a comma-separated file.
+void AppendCsvCell(std::string* text, double value, bool integer);
+
 // Writes the columns (all of one length) with a header line, "%.9e" per value ("%.0f" in
 // integer columns). Throws
 // NonFiniteError (tehl/io/hdf5_writer.hpp) naming the column and row of a NaN or Inf, and

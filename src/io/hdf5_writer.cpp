@@ -55,15 +55,19 @@ class Handle {
 
 hid_t VariableString() {
   const hid_t t = H5Tcopy(H5T_C_S1);
-  H5Tset_size(t, H5T_VARIABLE);
-  H5Tset_cset(t, H5T_CSET_UTF8);
+  if (t < 0) Fail("cannot make a string type");
+  if (H5Tset_size(t, H5T_VARIABLE) < 0 || H5Tset_cset(t, H5T_CSET_UTF8) < 0) {
+    H5Tclose(t);
+    Fail("cannot make a string type");
+  }
   return t;
 }
 
 void WriteStringAttribute(hid_t object, const std::string& name, const std::string& value) {
   Handle type(VariableString(), H5Tclose);
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  if (H5Aexists(object, name.c_str()) > 0) H5Adelete(object, name.c_str());
+  if (H5Aexists(object, name.c_str()) > 0 && H5Adelete(object, name.c_str()) < 0)
+    Fail("cannot replace attribute " + name);
   Handle attr(H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
               H5Aclose);
   const char* p = value.c_str();

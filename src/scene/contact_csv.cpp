@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "io/csv_table.hpp"
 #include "tehl/io/hdf5_writer.hpp"
 
 namespace tehl::internal {
@@ -30,11 +31,9 @@ std::string Header(const std::vector<Column>& columns) {
 
 std::string Cells(const std::vector<Column>& columns, size_t row) {
   std::string o;
-  char cell[40];
   for (size_t j = 0; j < columns.size(); ++j) {
-    std::snprintf(cell, sizeof cell, columns[j].integer ? "%s%.0f" : "%s%.9e", j ? "," : "",
-                  columns[j].values[row]);
-    o += cell;
+    if (j) o += ',';
+    AppendCsvCell(&o, columns[j].values[row], columns[j].integer);
   }
   return o;
 }

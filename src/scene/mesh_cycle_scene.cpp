@@ -1,6 +1,5 @@
 #include "tehl/scene/mesh_cycle_scene.hpp"
 
-#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -394,9 +393,7 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
                        !ro.quiet && tty ? "\n" : "", e.what());
           continue;
         }
-        // For the --resume tests: with TEHL_STOP_AFTER_CHECKPOINT set, the process stops
-        // itself once the checkpoint is on disk, so a test can SIGKILL it at a known point.
-        if (std::getenv("TEHL_STOP_AFTER_CHECKPOINT") != nullptr) raise(SIGSTOP);
+        if (ro.after_checkpoint) ro.after_checkpoint(static_cast<int>(k + 1));
       }
     }
   }
@@ -404,13 +401,15 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   r.wall_time_s = elapsed();
 
   if (h5) {
-    internal::FinishMeshCycleHdf5(*h5, r, doc.Bool("output", "profiles"));
-    r.hdf5_path = h5->final_path();
-    checkpoints->Remove();  // the result is complete: the checkpoint is spent
+    // The CSV first: a complete NAME.h5 marks a finished run (--resume leaves it as it is),
+    // so it is committed last, and the checkpoint is spent only then.
     if (doc.Bool("output", "csv")) {
       r.csv_path = csv_path;
       internal::WriteMeshCycleCsv(r.csv_path, r);
     }
+    internal::FinishMeshCycleHdf5(*h5, r, doc.Bool("output", "profiles"));
+    r.hdf5_path = h5->final_path();
+    checkpoints->Remove();
   }
   return r;
 }

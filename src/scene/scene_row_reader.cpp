@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "base/number_text.hpp"
 #include "io/hdf5_lock.hpp"
 #include "tehl/scene/study_index.hpp"
 
@@ -38,6 +39,10 @@ class Hdf5Reader {
     const hid_t set = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
     if (set < 0) throw std::runtime_error(path_ + ": no dataset " + name);
     const hid_t space = H5Dget_space(set);
+    if (space < 0) {
+      H5Dclose(set);
+      throw std::runtime_error(path_ + ": cannot read " + name);
+    }
     const hssize_t n = H5Sget_simple_extent_npoints(space);
     std::vector<double> v(n > 0 ? n : 0);
     const herr_t st =
@@ -54,14 +59,14 @@ class Hdf5Reader {
     if (set < 0) return out;
     const hid_t space = H5Dget_space(set);
     const hid_t type = H5Dget_type(set);
-    const hssize_t n = H5Sget_simple_extent_npoints(space);
-    std::vector<char*> p(n > 0 ? n : 0, nullptr);
+    const hssize_t n = space < 0 ? 0 : H5Sget_simple_extent_npoints(space);
+    std::vector<char*> p(n > 0 && type >= 0 ? n : 0, nullptr);
     if (!p.empty() && H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0) {
       for (char* s : p) out.emplace_back(s ? s : "");
       H5Dvlen_reclaim(type, space, H5P_DEFAULT, p.data());
     }
-    H5Tclose(type);
-    H5Sclose(space);
+    if (type >= 0) H5Tclose(type);
+    if (space >= 0) H5Sclose(space);
     H5Dclose(set);
     return out;
   }
@@ -70,7 +75,12 @@ class Hdf5Reader {
     if (H5Aexists_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT) <= 0) return "";
     const hid_t attr =
         H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    if (attr < 0) return "";
     const hid_t type = H5Aget_type(attr);
+    if (type < 0) {
+      H5Aclose(attr);
+      return "";
+    }
     char* value = nullptr;
     std::string out;
     if (H5Tis_variable_str(type) > 0 && H5Aread(attr, type, &value) >= 0 && value) {
@@ -87,6 +97,7 @@ class Hdf5Reader {
       throw std::runtime_error(path_ + ": no attribute " + object + "@" + name);
     const hid_t attr =
         H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    if (attr < 0) throw std::runtime_error(path_ + ": cannot read " + object + "@" + name);
     double x = 0;
     const herr_t st = H5Aread(attr, H5T_NATIVE_DOUBLE, &x);
     H5Aclose(attr);
@@ -228,18 +239,20 @@ SceneRow ContactRow(const std::string& path) {
     if (line.empty()) continue;
     const auto f = SplitCsv(line);
     if (f.size() != head.size()) throw std::runtime_error(path + ": ragged row");
-    h_min.push_back(std::stod(f[ih]));
-    h_c.push_back(std::stod(f[ic]));
-    p_max.push_back(std::stod(f[ip]));
-    if (itm != none) t_max.push_back(std::stod(f[itm]));
-    if (imu != none) mu.push_back(std::stod(f[imu]));
-    if (iwt != none) r.wall_time_s += std::stod(f[iwt]);
-    if (it1 != none && it2 != none)
-      surface.push_back(std::max(std::stod(f[it1]), std::stod(f[it2])));
-    if (ifl != none) flash.push_back(std::stod(f[ifl]));
-    if (irs != none) r.steady_restarts += std::stod(f[irs]);
-    if (ied != none) edge.push_back(std::stod(f[ied]));
-    if (iin != none) inlet.push_back(std::stod(f[iin]));
+    const auto num = [&](const std::string& cell) {
+      return internal::ParseRealOrThrow(cell, path);
+    };
+    h_min.push_back(num(f[ih]));
+    h_c.push_back(num(f[ic]));
+    p_max.push_back(num(f[ip]));
+    if (itm != none) t_max.push_back(num(f[itm]));
+    if (imu != none) mu.push_back(num(f[imu]));
+    if (iwt != none) r.wall_time_s += num(f[iwt]);
+    if (it1 != none && it2 != none) surface.push_back(std::max(num(f[it1]), num(f[it2])));
+    if (ifl != none) flash.push_back(num(f[ifl]));
+    if (irs != none) r.steady_restarts += num(f[irs]);
+    if (ied != none) edge.push_back(num(f[ied]));
+    if (iin != none) inlet.push_back(num(f[iin]));
     if (f[it] != "converged") {
       r.status = "not_converged";
       r.message = f[it];

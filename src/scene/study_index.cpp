@@ -1,10 +1,12 @@
 #include "tehl/scene/study_index.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
 
+#include "base/number_text.hpp"
 #include "io/atomic_file.hpp"
 #include "tehl/io/hdf5_writer.hpp"
 
@@ -92,8 +94,7 @@ std::string PlainValue(const std::string& literal) {
 
 std::string Num(double x) {
   char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);  // round trip
 }
 
 // The HDF5 dataset name of a parameter label ('/' separates groups).
@@ -150,7 +151,9 @@ std::vector<SceneRow> SceneRowsFromText(const std::string& text) {
     r.result_path = f[3];
     r.computed = f[4] == "1";
     r.steps = std::stoi(f[5]);
-    for (size_t i = 0; i < numeric; ++i) r.*SummaryColumns()[i].field = std::stod(f[6 + i]);
+    for (size_t i = 0; i < numeric; ++i)
+      r.*SummaryColumns()[i].field =
+          internal::ParseRealOrThrow(f[6 + i], "scene row " + f[0], /*allow_non_finite=*/true);
     rows.push_back(std::move(r));
   }
   return rows;

@@ -15,6 +15,7 @@
 // Results: one HDF5 file per run and a CSV of the cycle table (docs/results.md).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,9 @@ struct MeshCycleRunOptions {
   // (already_complete); else a checkpoint of the same case is continued.
   int checkpoint_every = 10;  // [steps]
   bool resume = false;
+  // Called with the step count done once each checkpoint is on disk (empty = nothing); the
+  // command line's resume tests stop the process there to kill it at a known step.
+  std::function<void(int)> after_checkpoint;
 };
 
 struct MeshCycleStep {
