@@ -319,7 +319,9 @@ void ExpectSingleContactLoad(const MeshCycleResult& r, double w_n_per_m) {
     EXPECT_NEAR(s.static_load_n_per_m / w_n_per_m, 1.0, 1e-6) << "s = " << s.s_m;
     ++checked;
   }
-  if (r.converged()) EXPECT_GE(checked, 1);
+  if (r.converged()) {
+    EXPECT_GE(checked, 1);
+  }
 }
 
 // The isothermal central film at the pitch point against the fits, with U, G, W from R0, u0
@@ -391,7 +393,9 @@ HARD_TEST(HARD_SUITE, RoughnessAmplitudeEqualToCentralFilm) {
   ASSERT_FALSE(run.r.steps.empty());
   // The film stays open: h_min > 0 at every step solved (h is a gap).
   for (const auto& s : run.r.steps)
-    if (s.summary.usable()) EXPECT_GT(s.h_min_m, 0.0) << "s = " << s.s_m;
+    if (s.summary.usable()) {
+      EXPECT_GT(s.h_min_m, 0.0) << "s = " << s.s_m;
+    }
 }
 
 HARD_TEST(HARD_SUITE, LowEntrainmentSpeed) {

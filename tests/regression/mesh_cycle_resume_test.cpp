@@ -111,6 +111,26 @@ TEST(MeshCycleResumeGuard, AnUnwritableCheckpointDoesNotStopTheRun) {
   EXPECT_FALSE(fs::exists(dir + "/" + stem + ".checkpoint"));
 }
 
+// A cycle CSV that cannot be written (a folder in the way of its temporary name) leaves no
+// result behind that --resume would take for a finished run: the HDF5 file is committed only
+// after the CSV, and the checkpoint stays, so the resumed run writes both.
+TEST(MeshCycleResumeGuard, AFailedCycleCsvLeavesTheRunResumable) {
+  const std::string dir = TempDirFor("resume_csv_blocked");
+  const std::string a = ReducedCase("seed004_sae40", {{"grid_points", "129"}, {"steps", "20"}});
+  const std::string stem = fs::path(a).stem().string();
+  const std::string blocked = dir + "/" + stem + "_cycle.csv.part";
+  fs::create_directories(blocked);
+  EXPECT_THROW(RunInProcess(a, dir, false), fs::filesystem_error);
+  EXPECT_FALSE(fs::exists(dir + "/" + stem + ".h5"));
+  EXPECT_TRUE(fs::exists(dir + "/" + stem + ".checkpoint"));
+  fs::remove_all(blocked);
+  const MeshCycleResult r = RunInProcess(a, dir, true);
+  EXPECT_FALSE(r.already_complete);
+  EXPECT_GT(r.resumed_from_step, 0);
+  EXPECT_TRUE(fs::exists(dir + "/" + stem + ".h5"));
+  EXPECT_TRUE(fs::exists(dir + "/" + stem + "_cycle.csv"));
+}
+
 // A checkpoint of another case is not used: the run starts at A.
 TEST(MeshCycleResumeGuard, CheckpointOfAnotherCaseIsIgnored) {
   const std::string dir = TempDirFor("resume_other");

@@ -104,7 +104,9 @@ TEST(Sweep, IndexEqualsTheScenesRunOneByOne) {
     EXPECT_EQ(fresh[k][ic], "1") << k;
     EXPECT_EQ(resumed[k][ic], "0") << k;
     for (size_t j = 0; j < head.size(); ++j)
-      if (j != ic) EXPECT_EQ(resumed[k][j], fresh[k][j]) << "row " << k << " column " << head[j];
+      if (j != ic) {
+        EXPECT_EQ(resumed[k][j], fresh[k][j]) << "row " << k << " column " << head[j];
+      }
   }
 }
 
@@ -202,8 +204,12 @@ TEST(Sweep, ResumeAfterKillRunsOnlyTheUnfinishedScenes) {
     EXPECT_EQ(t.status[i], "ok") << i;
     const bool was_done = finished.count(i) > 0;
     EXPECT_EQ(t.computed[i], was_done ? 0.0 : 1.0) << "scene " << i;
-    if (was_done) EXPECT_EQ(MtimeNs(t.result[i]), finished[i]) << "scene " << i << " rerun";
-    if (i > 0) EXPECT_LT(t.h_min_min[i], t.h_min_min[i - 1]) << "load rises with the scene";
+    if (was_done) {
+      EXPECT_EQ(MtimeNs(t.result[i]), finished[i]) << "scene " << i << " rerun";
+    }
+    if (i > 0) {
+      EXPECT_LT(t.h_min_min[i], t.h_min_min[i - 1]) << "load rises with the scene";
+    }
   }
 }
 

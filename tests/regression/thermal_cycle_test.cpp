@@ -59,7 +59,9 @@ void ExpectThermalComplete(const MeshCycleResult& r, bool check_balance = true) 
     EXPECT_GE(s.summary.coupling_iterations, 1) << "step " << k;
     // VALIDATION.md section 4: the energy balance within 1 %.
     EXPECT_GE(s.summary.energy_balance_error, 0.0) << "step " << k;
-    if (check_balance) EXPECT_LT(s.summary.energy_balance_error, 0.01) << "step " << k;
+    if (check_balance) {
+      EXPECT_LT(s.summary.energy_balance_error, 0.01) << "step " << k;
+    }
     // The film is heated: T_max above the inlet, 313.15 K (cases/seed004_sae*.toml).
     EXPECT_GT(s.t_max_k, 313.15) << "step " << k;
     EXPECT_GT(s.friction_coefficient, 0.0) << "step " << k;

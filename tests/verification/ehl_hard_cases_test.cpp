@@ -28,9 +28,13 @@ void ExpectConvergedOrDiagnosed(const MoesPoint& mp, int n) {
               "p_max/p_H = %.4f\n",
               mp.M, mp.L, mp.Hertz().max_pressure_pa / 1e9, n, sum.BriefReport().c_str(),
               ms.Hc(st), ms.Hmin(st), st.MaxPressure() / mp.Hertz().max_pressure_pa);
-  if (!sum.usable()) EXPECT_FALSE(sum.message.empty());
+  if (!sum.usable()) {
+    EXPECT_FALSE(sum.message.empty());
+  }
   // A converged film carries the whole load (the load row is part of the residual).
-  if (sum.usable()) EXPECT_LT(sum.load_error, 1e-8);
+  if (sum.usable()) {
+    EXPECT_LT(sum.load_error, 1e-8);
+  }
   ASSERT_TRUE(st.valid());
   EXPECT_EQ(st.p_pa.size(), n);
   EXPECT_TRUE(st.p_pa.allFinite());
@@ -123,7 +127,9 @@ TEST(HardCasesVerification, InvalidConditionsAreReportedNotThrown) {
       EXPECT_NE(sum.message.find("invalid"), std::string::npos) << sum.message;
       EXPECT_TRUE(st.p_pa.allFinite() && st.h_m.allFinite()) << b.what;
       EXPECT_EQ(st.p_pa.size(), before.p_pa.size());
-      if (with_guess) EXPECT_EQ((st.p_pa - before.p_pa).cwiseAbs().maxCoeff(), 0.0);
+      if (with_guess) {
+        EXPECT_EQ((st.p_pa - before.p_pa).cwiseAbs().maxCoeff(), 0.0);
+      }
       // The friction of what is left: the guess's, or NaN for the empty state (no read past
       // its end: a mesh cycle records the friction of every step, failed or not).
       const FilmFriction f = ms.solver.Friction(good, st);

@@ -66,7 +66,9 @@ TEST(EyringWallStress, VaryingViscosityWithoutGradientSolvesTheFilmIntegral) {
         const double exact = law.tau0 * std::asinh(eta_h * du / (h * law.tau0));
         EXPECT_NEAR(t, exact, 1e-12 * std::abs(exact)) << "du " << du;
       }
-      if (tau_l > 0) EXPECT_LT(std::abs(t), tau_l) << "du " << du;
+      if (tau_l > 0) {
+        EXPECT_LT(std::abs(t), tau_l) << "du " << du;
+      }
       double flow = 0;
       for (int j = 0; j < nz; ++j)
         flow += ((j == 0 || j == nz - 1) ? 0.5 : 1.0) * law.Rate(t, etas[j]);

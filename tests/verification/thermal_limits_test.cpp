@@ -167,9 +167,10 @@ TEST(ThermalLimits, SlidingNewtonianDiscConvergesOrStopsWithADiagnostic) {
       EXPECT_NE(r.summary.termination, LineContactSolver::Termination::kConverged);
       EXPECT_FALSE(r.summary.message.empty()) << "SRR " << srr;
       // A coupling that fails in sliding names the film model that settles there.
-      if (r.summary.termination == LineContactSolver::Termination::kCouplingNotConverged)
+      if (r.summary.termination == LineContactSolver::Termination::kCouplingNotConverged) {
         EXPECT_NE(r.summary.message.find("effect non_newtonian"), std::string::npos)
             << r.summary.message;
+      }
       std::printf("SRR %.1f: %s\n", srr, r.summary.message.c_str());
     }
     EXPECT_TRUE(r.state.p_pa.allFinite()) << "SRR " << srr;

@@ -1,6 +1,10 @@
 // Published fits for the central and minimum film thickness of an isothermal EHL line
 // contact (VALIDATION.md section 3). Used for initial guesses and validation reports; the
 // solver is never tuned toward them.
+//
+// Domain: Hamrock's U = eta0 um/(E' R), W = w/(E' R) and R finite and > 0, G = alpha E' >= 0
+// (tehl/units.hpp, LineContactGroups); Moes' M > 0, L >= 0. The fits are plain formulas and do
+// not check it: outside it (a contact at rest, no load) they return 0, inf or NaN.
 #pragma once
 
 namespace tehl {

@@ -35,8 +35,9 @@ std::string Block(const std::string& doc, const std::string& name) {
 // Every section header and every key line of a schema appear in the text.
 void ExpectEveryKey(const internal::Schema& schema, const std::string& text) {
   for (const auto& sec : schema.sections) {
-    if (!sec.name.empty())
+    if (!sec.name.empty()) {
       EXPECT_NE(text.find("[" + sec.name + "]"), std::string::npos) << "[" << sec.name << "]";
+    }
     for (const auto& k : sec.keys) {
       const bool listed = text.find("\n" + k.name + " = ") != std::string::npos ||
                           text.find("\n# " + k.name + " =") != std::string::npos;

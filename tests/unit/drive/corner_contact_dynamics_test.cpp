@@ -70,7 +70,9 @@ TEST(CornerContactDynamics, TheEnteringPairCarriesLoadBeforeA) {
     const double s = phase + m.pairs[i] * pb;
     const double share = mesh.PairShare(seg, static_cast<int>(i), phase, x);
     shares += share;
-    if (s > mesh.length_m()) EXPECT_TRUE(m.corner[i]);
+    if (s > mesh.length_m()) {
+      EXPECT_TRUE(m.corner[i]);
+    }
     if (s < 0) {
       EXPECT_TRUE(m.corner[i]);
       EXPECT_LT(mesh.GapAt(s), x);

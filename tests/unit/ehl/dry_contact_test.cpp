@@ -84,7 +84,9 @@ TEST(DryContactVerification, LoadBalanceAndContactConditionsHold) {
     EXPECT_NEAR(gap, sol.gap_m[i], 1e-9 * scale) << i;
     EXPECT_GE(sol.pressure_pa[i], 0.0);
     EXPECT_GE(gap, -1e-9 * scale) << i;
-    if (sol.pressure_pa[i] > 0) EXPECT_LT(std::abs(gap), 1e-9 * scale) << i;
+    if (sol.pressure_pa[i] > 0) {
+      EXPECT_LT(std::abs(gap), 1e-9 * scale) << i;
+    }
   }
 }
 

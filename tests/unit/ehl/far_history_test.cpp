@@ -57,7 +57,9 @@ TEST(FarHistory, FftEqualsTheDirectSumToRoundOff) {
       for (int i = 0; i <= near && i < n; ++i)  // no far lag
         EXPECT_EQ(fft[i], 0.0) << n << " " << near << " " << i;
       EXPECT_EQ(far.empty(), near >= n - 1);
-      if (far.empty()) EXPECT_EQ(scale, 0.0);
+      if (far.empty()) {
+        EXPECT_EQ(scale, 0.0);
+      }
       EXPECT_LE(err, 1e-12 * scale) << "n " << n << ", near " << near;
       if (n == 513 && near == 16)
         std::printf("n 513, near 16: FFT length %d, max error %.2e of %.3e\n", far.fft_size(), err,

@@ -463,7 +463,9 @@ TEST(FilmEnergySolver, ImplicitEulerIsFirstOrderInTime) {
   for (size_t i = 1; i < d.size(); ++i) {
     const double order = std::log2(d[i - 1] / d[i]);
     std::printf("dt refinement %zu: difference %.3e K, order %.3f\n", i, d[i], order);
-    if (i >= 2) EXPECT_NEAR(order, 1.0, 0.1) << i;
+    if (i >= 2) {
+      EXPECT_NEAR(order, 1.0, 0.1) << i;
+    }
   }
 }
 

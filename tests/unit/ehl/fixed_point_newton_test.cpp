@@ -41,7 +41,9 @@ TEST(FixedPointNewton, FindsARepellingFixedPointThePlainIterationLeaves) {
   // Quadratic: once below 1e-2 the next residual is below the square times a modest factor
   // (|F''| / |F'| ~ 6 sqrt(2) / 4 here), until round-off.
   for (size_t k = 1; k < r.history.size(); ++k)
-    if (r.history[k - 1] < 1e-2 && r.history[k - 1] > 1e-6) EXPECT_LT(r.history[k], 10 * r.history[k - 1] * r.history[k - 1]);
+    if (r.history[k - 1] < 1e-2 && r.history[k - 1] > 1e-6) {
+      EXPECT_LT(r.history[k], 10 * r.history[k - 1] * r.history[k - 1]);
+    }
 }
 
 // A linear map with one eigenvalue above 1 (a positive loop gain: no under-relaxation of the

@@ -96,7 +96,9 @@ TEST(MovingHeatSource, WeightsAreLowerTriangularAndSumToTheExactIntegral) {
   for (int i = 0; i < g.size(); ++i) {
     double sum = 0;
     for (int k = 0; k < g.size(); ++k) {
-      if (k > i) EXPECT_EQ(s.Weight(i, k), 0.0);
+      if (k > i) {
+        EXPECT_EQ(s.Weight(i, k), 0.0);
+      }
       sum += s.Weight(i, k);
     }
     EXPECT_NEAR(sum, 2 * std::sqrt(g.x(i) - g.x(0)), 1e-15) << i;

@@ -140,7 +140,9 @@ TEST(LoadedLoadShare, SharesOfAllPairsSumToOneAndLightLoadsMeshOnThePath) {
       }
       EXPECT_NEAR(sum, 1.0, 1e-9) << "F " << f << " s " << s;
       // A vanishing load closes no corner: the stiffness share on the path.
-      if (f < 1.0) EXPECT_NEAR(r.share, StiffnessLoadShare(t.path, s, t.k), 1e-9) << s;
+      if (f < 1.0) {
+        EXPECT_NEAR(r.share, StiffnessLoadShare(t.path, s, t.k), 1e-9) << s;
+      }
     }
   }
 }

@@ -268,7 +268,9 @@ TEST(StudyIndex, DiscSweepIndexCarriesTemperatureFrictionAndWallTime) {
     EXPECT_EQ(second[k][ic], "0") << k;
     ASSERT_EQ(second[k].size(), first[k].size()) << k;
     for (size_t j = 0; j < head.size(); ++j)
-      if (j != ic) EXPECT_EQ(second[k][j], first[k][j]) << "row " << k << " column " << head[j];
+      if (j != ic) {
+        EXPECT_EQ(second[k][j], first[k][j]) << "row " << k << " column " << head[j];
+      }
   }
 }
 
