@@ -15,6 +15,7 @@ namespace tehl {
 namespace {
 
 constexpr double kRankTolerance = 1e-10;  // pivot threshold on unit-norm rows [-]
+constexpr double kRestFraction = 1e-12;   // |w| below this times max |w| is rest [-]
 
 struct Row {
   std::vector<std::pair<int, double>> coeffs;
@@ -22,6 +23,7 @@ struct Row {
   bool input = false;
   int member = -1;    // input rows: the member
   std::string label;  // for messages
+  std::string where;  // kinematic rows: the mesh or member section that gave the row
 };
 
 std::string Num(double x) {
@@ -132,14 +134,23 @@ class TrainBuilder {
       if (m <= 0)
         return Problem(a.where, "module_m", "the pinion of rack " + b.name + " needs a module",
                        "module_m of the pinion or of the rack [m]");
+      if (!FirstMeshOfPair(mesh, ia, ib)) return;
       const double r = 0.5 * m * a.teeth;  // pitch radius, Example 2.3: D = m N
-      rows_.push_back({{{ib, 1.0}, {ia, -r}}, 0.0, false, -1, "rack mesh " + what});
+      rows_.push_back({{{ib, 1.0}, {ia, -r}}, 0.0, false, -1, "rack mesh " + what, mesh.where});
       return;
     }
     if (b.kind != MemberKind::kGear)
       return Problem(mesh.where, "b", mesh.b + " is a " + ToString(b.kind) + ", not a gear",
                      "a gear; a rack only in a mesh of kind \"rack\"");
     if (a.teeth < 1 || b.teeth < 1) return;  // reported with the member
+    // Two gears mesh only with one module (worm: axial module = the wheel's transverse one;
+    // bevel: the module at the large end).
+    if (a.module_m > 0 && b.module_m > 0 &&
+        std::abs(a.module_m - b.module_m) > 1e-9 * std::max(a.module_m, b.module_m))
+      return Problem(mesh.where, "b",
+                     mesh.b + " has module " + Num(b.module_m) + " m and " + mesh.a + " " +
+                         Num(a.module_m) + " m: gears of different modules do not mesh",
+                     "equal module_m on both gears of a mesh");
     double s = -1.0;
     switch (mesh.kind) {
       case MeshKind::kExternal:
@@ -178,14 +189,33 @@ class TrainBuilder {
     if (c >= 0 && mesh.kind == MeshKind::kWorm)
       return Problem(mesh.where, "kind", "a worm pair on a carrier is not supported",
                      "worms on fixed axes");
+    if (!FirstMeshOfPair(mesh, ia, ib)) return;
     // z_b (w_b - w_c) - s z_a (w_a - w_c) = 0, Willis (2.7) per mesh.
     const double za = a.teeth, zb = b.teeth;
-    Row row{{{ib, zb}, {ia, -s * za}}, 0.0, false, -1, ToString(mesh.kind) + " mesh " + what};
+    Row row{{{ib, zb}, {ia, -s * za}},
+            0.0,
+            false,
+            -1,
+            ToString(mesh.kind) + " mesh " + what,
+            mesh.where};
     if (c >= 0) {
       row.coeffs.push_back({c, s * za - zb});
       row.label += " (on carrier " + spec_.members[c].name + ")";
     }
     rows_.push_back(std::move(row));
+  }
+
+  // Two gears touch at one pitch point: a second mesh of the same pair (say once external,
+  // once internal) is a slip of the file, reported at the second mesh.
+  bool FirstMeshOfPair(const TrainMesh& mesh, int ia, int ib) {
+    const auto [it, fresh] = pair_mesh_.emplace(
+        std::minmax(ia, ib), mesh.where.empty() ? mesh.a + "-" + mesh.b : "[" + mesh.where + "]");
+    if (!fresh)
+      Problem(mesh.where, "b",
+              mesh.a + " and " + mesh.b + " already mesh in " + it->second +
+                  ": one pair of gears has one mesh",
+              "one [mesh.NAME] per pair of members (remove this one)");
+    return fresh;
   }
 
   void AddShafts() {
@@ -200,7 +230,8 @@ class TrainBuilder {
              0.0,
              false,
              -1,
-             "shaft " + m.shaft + " (" + spec_.members[it->second].name + " = " + m.name + ")"});
+             "shaft " + m.shaft + " (" + spec_.members[it->second].name + " = " + m.name + ")",
+             m.where});
     }
   }
 
@@ -208,8 +239,12 @@ class TrainBuilder {
     for (int i = 0; i < static_cast<int>(spec_.members.size()); ++i) {
       const TrainMember& m = spec_.members[i];
       if (!m.speed || !std::isfinite(*m.speed)) continue;
-      rows_.push_back(
-          {{{i, 1.0}}, *m.speed, true, i, (*m.speed == 0.0 ? "held " : "input ") + m.name});
+      rows_.push_back({{{i, 1.0}},
+                       *m.speed,
+                       true,
+                       i,
+                       (*m.speed == 0.0 ? "held " : "input ") + m.name,
+                       m.where});
     }
   }
 
@@ -263,6 +298,37 @@ class TrainBuilder {
       rank = new_rank;
     }
     problems_.ThrowIfAny();
+    // The free motions of the meshes and shafts alone (the kinematic rows come first).
+    int kinematic = 0;
+    while (kinematic < rows && !rows_[kinematic].input) ++kinematic;
+    Eigen::MatrixXd free_motions = Eigen::MatrixXd::Identity(n, n);
+    if (kinematic > 0) {
+      Eigen::FullPivLU<Eigen::MatrixXd> lu(a.topRows(kinematic));
+      lu.setThreshold(kRankTolerance);
+      free_motions = lu.rank() == n ? Eigen::MatrixXd::Zero(n, 0) : Eigen::MatrixXd(lu.kernel());
+    }
+    if (free_motions.cols() > 0) {
+      Eigen::HouseholderQR<Eigen::MatrixXd> qr(free_motions);  // orthonormal basis
+      free_motions = qr.householderQ() * Eigen::MatrixXd::Identity(n, free_motions.cols());
+    }
+    // A member no free motion moves is locked by the meshes themselves (an odd loop of
+    // external gears): its rest is no answer. Locked inputs were reported above.
+    std::vector<std::string> locked;
+    std::string locked_where;
+    for (int j = 0; j < n; ++j)
+      if (free_motions.cols() == 0 || free_motions.row(j).cwiseAbs().maxCoeff() < 1e-9) {
+        locked.push_back(spec_.members[j].name);
+        if (locked_where.empty()) locked_where = spec_.members[j].where;
+      }
+    if (!locked.empty()) {
+      Problem(locked_where, "speed",
+              "locked: the meshes and shafts alone hold " + Join(locked) +
+                  " at rest (a loop of meshes that cannot turn, such as three external gears "
+                  "in a triangle)",
+              "meshes that leave the train free to turn (remove the mesh that closes the "
+              "loop)");
+      problems_.ThrowIfAny();
+    }
     if (rank < n) {
       Eigen::FullPivLU<Eigen::MatrixXd> lu(a);
       lu.setThreshold(kRankTolerance);
@@ -282,22 +348,38 @@ class TrainBuilder {
               "mesh or shaft connecting them to the rest");
       problems_.ThrowIfAny();
     }
-    const Eigen::VectorXd w = a.colPivHouseholderQr().solve(b);
+    Eigen::VectorXd w = a.colPivHouseholderQr().solve(b);
+    // Round-off of a member at rest (a held ring's planet mesh, say) is rest.
+    const double w_max = w.cwiseAbs().maxCoeff();
+    for (int j = 0; j < n; ++j)
+      if (std::abs(w(j)) < kRestFraction * w_max) w(j) = 0.0;
     TrainSolution s;
     s.speed.assign(w.data(), w.data() + n);
     s.equations = rows;
     s.unknowns = n;
     s.rank = rank;
     s.residual = rows ? (a * w - b).cwiseAbs().maxCoeff() / (1.0 + w.cwiseAbs().maxCoeff()) : 0;
+    s.free_motions.assign(free_motions.cols(), std::vector<double>(n));
+    for (int k = 0; k < free_motions.cols(); ++k)
+      for (int j = 0; j < n; ++j) s.free_motions[k][j] = free_motions(j, k);
     const int in = spec_.Index(spec_.input), out = spec_.Index(spec_.output);
-    if (in >= 0 && out >= 0 && std::abs(s.speed[in]) > 0)
-      s.train_value = s.speed[out] / s.speed[in];
+    if (in >= 0 && s.speed[in] == 0.0) {
+      const TrainMember& m = spec_.members[in];
+      Problem("train", "input",
+              m.speed && *m.speed == 0.0
+                  ? "the input member is held: w_output / w_input is undefined"
+                  : "the input member " + m.name + " is at rest: w_output / w_input is undefined",
+              "a member that turns: the driven member, or one the train turns");
+      problems_.ThrowIfAny();
+    }
+    if (in >= 0 && out >= 0) s.train_value = s.speed[out] / s.speed[in];
     return s;
   }
 
  private:
   const GearTrainSpec& spec_;
   std::vector<Row> rows_;
+  std::map<std::pair<int, int>, std::string> pair_mesh_;  // meshed pair -> its mesh
   ProblemList problems_;
 };
 

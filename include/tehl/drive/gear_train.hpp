@@ -16,9 +16,11 @@
 // A rack's speed is positive in the direction the pitch point of its pinion moves when the
 // pinion turns positively.
 //
-// The rank of the system is checked: a train whose speeds are not all fixed, a locked train,
-// or a speed given for a member the other relations already fix are input errors naming the
-// members and relations concerned.
+// The rank of the system is checked: a train whose speeds are not all fixed, a locked train
+// (a member the meshes and shafts alone hold at rest), a speed given for a member the other
+// relations already fix, a second mesh between the same two members, and an input member at
+// rest (w_output / w_input undefined) are input errors naming the members and relations
+// concerned. Speeds below 1e-12 times the largest are round-off and returned as exactly 0.
 #pragma once
 
 #include <optional>
@@ -74,6 +76,10 @@ struct TrainSolution {
   int unknowns = 0;                   // one speed per member
   int rank = 0;                       // rank of the system (== unknowns when solved)
   double residual = 0.0;              // max |A w - b| over the rows, relative [-]
+  // An orthonormal basis of the motions the meshes and shafts alone allow (the null space
+  // of their rows, before inputs and held members): free_motions[k][member], rack entries
+  // in m/s per unit. Used for the torques by virtual work (train_torques.hpp).
+  std::vector<std::vector<double>> free_motions;
 };
 
 // Solves the train. Throws InputError for a spec that breaks a rule (unknown member in a

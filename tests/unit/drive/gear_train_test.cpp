@@ -337,5 +337,70 @@ TEST(GearTrain, RackPinionNeedsAModule) {
   EXPECT_NEAR(SolveGearTrain(s).speed[1], 0.5 * 0.002 * 20, 1e-15);
 }
 
+// The simple planetary of seed 001 Example 2.11's teeth: sun 50, planet 20, ring 90.
+GearTrainSpec Planetary(const char* held) {
+  GearTrainSpec s;
+  s.members = {Gear("sun", 50), Gear("planet", 20, "", "arm"), Gear("ring", 90), Arm("arm")};
+  s.meshes = {Mesh("sun", "planet"), Mesh("planet", "ring", MeshKind::kInternal)};
+  s.members[0].speed = 157.0;
+  s.members[s.Index(held)].speed = 0.0;
+  return s;
+}
+
+TEST(GearTrain, HeldInputHasNoTrainValue) {
+  // w_arm / w_ring with the ring held is x / 0: the ring cannot be the input.
+  GearTrainSpec s = Planetary("ring");
+  s.input = "ring";
+  s.output = "arm";
+  const std::string m = Message(s);
+  EXPECT_NE(m.find("train.input: the input member is held: w_output / w_input is undefined"),
+            std::string::npos)
+      << m;
+}
+
+TEST(GearTrain, RoundOffOfAMemberAtRestIsExactlyZero) {
+  // Ring held, sun driven: the ring's solved speed is exactly 0, not 1e-15 of the sun's;
+  // the arm turns at 157 / (1 + 90/50) (Table 1.1).
+  const GearTrainSpec s = Planetary("ring");
+  const TrainSolution r = SolveGearTrain(s);
+  EXPECT_EQ(Speed(s, r, "ring"), 0.0);
+  EXPECT_NEAR(Speed(s, r, "arm"), 157.0 / 2.8, 1e-12);
+}
+
+TEST(GearTrain, GearsOfDifferentModulesDoNotMesh) {
+  GearTrainSpec s;
+  s.members = {Gear("A", 20), Gear("B", 40)};
+  s.members[0].speed = 1.0;
+  s.members[0].module_m = 0.002;
+  s.members[1].module_m = 0.003;
+  s.meshes = {Mesh("A", "B")};
+  EXPECT_NE(Message(s).find("mesh.AB.b: B has module 0.003 m and A 0.002 m"), std::string::npos)
+      << Message(s);
+  s.members[1].module_m = 0.002;
+  EXPECT_NEAR(SolveGearTrain(s).speed[1], -0.5, 1e-15);  // eq. 2.1: -z_A/z_B
+}
+
+TEST(GearTrain, ASecondMeshOfTheSamePairIsReportedThere) {
+  GearTrainSpec s;
+  s.members = {Gear("A", 20), Gear("B", 40)};
+  s.members[0].speed = 1.0;
+  s.meshes = {Mesh("A", "B"), Mesh("B", "A", MeshKind::kInternal)};
+  s.meshes[1].where = "mesh.again";
+  const std::string m = Message(s);
+  EXPECT_NE(m.find("mesh.again.b: B and A already mesh in [mesh.AB]"), std::string::npos) << m;
+  EXPECT_EQ(m.find("speed"), std::string::npos) << m;
+}
+
+TEST(GearTrain, LockedTriangleWithoutInputIsRejectedToo) {
+  // The same triangle as above, nothing driven: w = 0 is its only motion, not an answer.
+  GearTrainSpec s;
+  s.members = {Gear("A", 20), Gear("B", 20), Gear("C", 20)};
+  s.meshes = {Mesh("A", "B"), Mesh("B", "C"), Mesh("C", "A")};
+  const std::string m = Message(s);
+  EXPECT_NE(m.find("gear.A.speed: locked: the meshes and shafts alone hold A, B, C at rest"),
+            std::string::npos)
+      << m;
+}
+
 }  // namespace
 }  // namespace tehl
