@@ -78,6 +78,24 @@ DcMotor::DcMotor(const DcMotorSpec& spec) : spec_(spec) {
     rule(positive(spec.field_resistance_ohm), "field_resistance_ohm", spec.field_resistance_ohm,
          "a shunt motor needs its field resistance (I_f = E / R_f)", "R_f > 0 [Ohm]");
   p.ThrowIfAny();
+  // Energy: the developed power T w may not exceed the power E_b I_a the armature takes
+  // from the supply, so K_a I_a w <= K_w I_f w I_a (3.1.1-3.1.2): K_a <= K_w I_f (permanent
+  // magnet K_w; series, T = K_a I_a^2 and E_b = K_w I_a w: K_a <= K_w).
+  if (spec.torque_constant > Flux() * (1 + 1e-12)) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%.6g", Flux());
+    const std::string lossless = buf;
+    const std::string unit = Series(spec) ? " N m/A^2" : " N m/A";
+    const std::string law = Series(spec)                                 ? "K_w"
+                            : spec.type == DcMotorType::kPermanentMagnet ? "K_w"
+                            : spec.type == DcMotorType::kShunt           ? "K_w E / R_f"
+                                                                         : "K_w I_f";
+    std::snprintf(buf, sizeof buf, "%g", spec.torque_constant);
+    p.Add({"", 0, "torque_constant", buf,
+           "exceeds the lossless " + law + " = " + lossless + unit +
+               ": the shaft would give more power than the armature takes (T w > E_b I_a)",
+           "0 < K_a <= " + lossless + unit + " (0 = the lossless value)"});
+  }
   if (spec.rated_current_a > 0 && BaseSpeed() <= 0)
     p.Add({"", 0, "rated_current_a", std::to_string(spec.rated_current_a),
            "I_r R_a reaches the supply voltage: no base speed", "I_r < E / R_a [A]"});

@@ -8,6 +8,8 @@
 //                                error of the source, corrected as in the extraction)
 //                                T = K_a I_a^2                                    (3.1.4)
 // K_a defaults to the lossless value (E_b I_a = T w): K_w I_f, K_w, or K_w for series.
+// A larger K_a would make T w > E_b I_a (more shaft power than the armature takes) and is
+// rejected; a smaller one models the armature's own losses.
 // R_a is the whole armature circuit (series: armature + series field).
 // Speed control (seed 001, Fig. 3.1.3): with the rated armature current I_r and the rated
 // field, the base speed w_b = (E - I_r R_a)/(K_w I_f) separates the constant-torque region

@@ -149,5 +149,40 @@ TEST(DcMotor, RejectsMissingFieldAndNonPositiveConstants) {
   EXPECT_THROW(DcMotor{s}, InputError);
 }
 
+// Energy with (3.1.1), (3.1.2): T w = K_a I_a w and E_b I_a = K_w I_f w I_a, so a torque
+// constant above K_w I_f makes more shaft power than the armature takes. Shunt of
+// ShuntSpeedAndTorqueLaws: K_w E / R_f = 0.5 * 220 / 110 = 1 N m/A is the largest K_a.
+TEST(DcMotor, RejectsATorqueConstantAboveTheLosslessValue) {
+  DcMotorSpec s;
+  s.type = DcMotorType::kShunt;
+  s.supply_voltage_v = 220;
+  s.armature_resistance_ohm = 0.4;
+  s.speed_constant = 0.5;
+  s.field_resistance_ohm = 110;
+  s.torque_constant = 1.0;  // exactly lossless: accepted
+  EXPECT_NO_THROW(DcMotor{s});
+  s.torque_constant = 1.1;
+  try {
+    DcMotor{s};
+    ADD_FAILURE() << "K_a = 1.1 > K_w I_f = 1 accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("torque_constant"), std::string::npos) << m;
+    EXPECT_NE(m.find("K_a <= 1 N m/A"), std::string::npos) << m;
+  }
+  // Series, T = K_a I_a^2 and E_b = K_w I_a w: K_a <= K_w = 0.01 N m/A^2.
+  DcMotorSpec series;
+  series.type = DcMotorType::kSeries;
+  series.supply_voltage_v = 100;
+  series.armature_resistance_ohm = 0.5;
+  series.speed_constant = 0.01;
+  series.torque_constant = 0.011;
+  EXPECT_THROW(DcMotor{series}, InputError);
+  // Permanent magnet, E_b = K_w w: K_a <= K_w = 0.05 N m/A.
+  DcMotorSpec pm = Pm();
+  pm.torque_constant = 0.06;
+  EXPECT_THROW(DcMotor{pm}, InputError);
+}
+
 }  // namespace
 }  // namespace tehl
