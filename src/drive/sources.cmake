@@ -6,6 +6,7 @@ list(APPEND TEHL_SOURCES
   src/drive/dynamic_response.cpp
   src/drive/gear_train.cpp
   src/drive/gear_train_tabulation.cpp
+  src/drive/train_torques.cpp
   src/drive/planet_design.cpp
   src/drive/dc_motor.cpp
   src/drive/motor_schema.cpp
