@@ -6,13 +6,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include "cli/commands.hpp"
+#include "drive/train_checks.hpp"
 #include "drive/train_reader.hpp"
+#include "io/atomic_file.hpp"
 #include "tehl/error.hpp"
 #include "tehl/units.hpp"
 
@@ -31,10 +34,31 @@ std::string Direction(const TrainMember& m, double w) {
   return w > 0 ? "counter-clockwise (+)" : "clockwise (-)";
 }
 
+// A gear riding on a carrier that meshes through a bevel pair: its axis is not the train's,
+// so w_carrier + spin is no speed of anything; only its spin relative to the carrier is.
+bool BevelPlanet(const GearTrainSpec& spec, const TrainMember& m) {
+  if (m.kind != MemberKind::kGear || m.carrier.empty()) return false;
+  for (const TrainMesh& mesh : spec.meshes)
+    if (mesh.kind == MeshKind::kBevel && (mesh.a == m.name || mesh.b == m.name)) return true;
+  return false;
+}
+
+std::string TrainValueUnit(const GearTrainSpec& spec) {
+  const int in = spec.Index(spec.input), out = spec.Index(spec.output);
+  const bool rack_in = spec.members[in].kind == MemberKind::kRack;
+  const bool rack_out = spec.members[out].kind == MemberKind::kRack;
+  return rack_in == rack_out ? "" : rack_in ? " rad/m" : " m/rad";
+}
+
 void Speeds(std::ostream& o, const internal::TrainFile& f, const TrainSolution& s) {
   char buf[200];
-  o << "Speeds (positive = counter-clockwise looking along the common axis; bevel gears seen "
-       "from their backs; worm wheels: positive as a right-hand worm drives them):\n";
+  const bool crossed = std::any_of(f.spec.meshes.begin(), f.spec.meshes.end(), [](const auto& m) {
+    return m.kind == MeshKind::kBevel || m.kind == MeshKind::kWorm;
+  });
+  o << (crossed ? "Speeds (positive = counter-clockwise about each member's own axis, parallel "
+                  "axes seen from one side; bevel gears seen from their backs; worm wheels: "
+                  "positive as a right-hand worm drives them):\n"
+                : "Speeds (positive = counter-clockwise looking along the common axis):\n");
   std::snprintf(buf, sizeof buf, "  %-12s %-8s %6s %14s %14s  %s\n", "member", "kind", "z",
                 "speed [rad/s]", "speed [rpm]", "direction");
   o << buf;
@@ -47,6 +71,13 @@ void Speeds(std::ostream& o, const internal::TrainFile& f, const TrainSolution& 
       std::snprintf(buf, sizeof buf, "  %-12s %-8s %6s %14s %14s  %s, %s m/s = %s m/min\n",
                     m.name.c_str(), "rack", "-", "-", "-", Direction(m, w).c_str(),
                     Fmt("%.6g", w).c_str(), Fmt("%.6g", w * 60).c_str());
+    } else if (BevelPlanet(f.spec, m)) {
+      const double spin = w - s.speed[f.spec.Index(m.carrier)];
+      std::snprintf(buf, sizeof buf,
+                    "  %-12s %-8s %6s %14s %14s  spins %s rad/s (%s rpm) about "
+                    "its own axis, relative to carrier %s\n",
+                    m.name.c_str(), "gear", z.c_str(), "-", "-", Fmt("%.6g", spin).c_str(),
+                    Fmt("%.6g", RadPerSToRpm(spin)).c_str(), m.carrier.c_str());
     } else {
       std::snprintf(buf, sizeof buf, "  %-12s %-8s %6s %14s %14s  %s%s\n", m.name.c_str(),
                     ToString(m.kind).c_str(), z.c_str(), Fmt("%.6g", w).c_str(),
@@ -55,12 +86,55 @@ void Speeds(std::ostream& o, const internal::TrainFile& f, const TrainSolution& 
     }
     o << buf;
   }
-  if (s.train_value)
+  if (s.train_value) {
+    const std::string unit = TrainValueUnit(f.spec);
     o << "Train value w_" << f.spec.output << " / w_" << f.spec.input << " = "
-      << Fmt("%.8g", *s.train_value) << " (speed ratio " << Fmt("%.8g", 1.0 / *s.train_value)
+      << Fmt("%.8g", *s.train_value) << unit << " (speed ratio "
+      << Fmt("%.8g", 1.0 / *s.train_value) << (unit.empty() ? "" : " 1/" + unit.substr(1))
       << " : 1)\n";
+  }
   o << "Linear system: " << s.equations << " equations, " << s.unknowns << " unknowns, rank "
     << s.rank << ", residual " << Fmt("%.2e", s.residual) << "\n";
+}
+
+void Torques(std::ostream& o,
+             const internal::TrainFile& f,
+             const TrainSolution& s,
+             const TrainTorques& t,
+             bool motor) {
+  if (!t.solved) {
+    o << "\nTorques: not given (" << t.message << ")\n";
+    return;
+  }
+  const TrainMember& in = f.spec.members[t.input];
+  o << "\nTorques (frictionless, by virtual work; applied to each member from outside, "
+       "positive counter-clockwise; "
+    << (motor ? "at the motor's torque on " + in.name : "per 1 N m on " + in.name)
+    << "; racks: force [N]):\n";
+  double sum = 0;
+  bool coaxial = true;
+  for (size_t j = 0; j < f.spec.members.size(); ++j) {
+    if (!t.torque[j]) continue;
+    const TrainMember& m = f.spec.members[j];
+    const bool rack = m.kind == MemberKind::kRack;
+    coaxial = coaxial && !rack && m.carrier.empty();
+    sum += *t.torque[j];
+    const std::string role = static_cast<int>(j) == t.input    ? "input"
+                             : static_cast<int>(j) == t.output ? "output (the load)"
+                                                               : "held (the frame's reaction)";
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "  %-12s %14s %-4s %s\n", m.name.c_str(),
+                  Fmt("%+.6g", *t.torque[j]).c_str(), rack ? "N" : "N m", role.c_str());
+    o << buf;
+  }
+  o << "  power balance sum T w = " << Fmt("%.2e", t.power_residual) << " of the input power";
+  // On one common axis the torques balance: v = all members turning together is a motion.
+  if (coaxial && !std::any_of(f.spec.meshes.begin(), f.spec.meshes.end(), [](const auto& m) {
+        return m.kind == MeshKind::kBevel || m.kind == MeshKind::kWorm;
+      }))
+    o << "; sum of the torques " << Fmt("%.3g", sum) << " N m";
+  o << "\n";
+  (void)s;
 }
 
 void Tables(std::ostream& o, const std::vector<TabulationTable>& tables) {
@@ -97,14 +171,34 @@ void Planets(std::ostream& o, const internal::TrainFile& f) {
       << (r.coaxial ? "yes"
                     : "no - non-standard planet; the rules use the equivalent z_p = " +
                           Fmt("%.1f", r.coaxial_planet_teeth))
-      << "\n  tip clearance: N < " << Fmt("%.4f", r.clearance_limit) << ", at most "
-      << r.max_by_clearance << " planets\n  equally spaced ((z_sun + z_ring)/N integer, "
-      << r.total_teeth << "/N): N in {";
+      << "\n  tip clearance: N < " << internal::PlanetLimitText(r.clearance_limit) << ", at most "
+      << r.max_by_clearance << " planets\n  equally spaced ((z_sun + z_ring)/N "
+      << "integer, " << r.total_teeth << "/N): N in {";
     for (size_t i = 0; i < r.equally_spaced.size(); ++i)
       o << (i ? ", " : "") << r.equally_spaced[i];
-    o << "}; maximum " << r.max_planets << " planets";
-    if (p.planets) o << "; declared " << *p.planets << ": fits";
-    o << "\n";
+    o << "}; maximum " << r.max_planets << " planets\n";
+    std::vector<std::string> unchecked;
+    for (const internal::PlanetStep& st : p.steps) {
+      o << "  planet gear " << st.gear << " (z = " << st.teeth << "): ";
+      if (st.clearance_limit)
+        o << "tip clearance N < " << internal::PlanetLimitText(*st.clearance_limit) << ", at most "
+          << st.max_by_clearance << " planets (" << st.basis << ")\n";
+      else {
+        o << st.basis << "\n";
+        unchecked.push_back(st.gear);
+      }
+    }
+    for (const std::string& n : p.notes) o << "  " << n << "\n";
+    if (p.planets) {
+      o << "  declared " << *p.planets << ": fits";
+      if (!p.notes.empty() && unchecked.empty()) o << " the rules checked";
+      if (!unchecked.empty()) {
+        o << " the rules checked; the tip clearance of planet gear";
+        for (size_t i = 0; i < unchecked.size(); ++i) o << (i ? ", " : " ") << unchecked[i];
+        o << " is not checked (give module_m)";
+      }
+      o << "\n";
+    }
   }
 }
 
@@ -120,7 +214,11 @@ int Motor(std::ostream& o, const internal::TrainFile& f, const internal::TrainRe
     << (std::isfinite(motor.NoLoadSpeed()) ? Fmt("%.6g", RadPerSToRpm(motor.NoLoadSpeed())) + " rpm"
                                            : std::string("unbounded (series)"))
     << ", stall torque " << Fmt("%.6g", motor.StallTorque()) << " N m\n";
-  if (s.rated_current_a > 0)
+  if (s.rated_current_a > 0 && s.type == DcMotorType::kPermanentMagnet)
+    o << "  base speed " << Fmt("%.6g", RadPerSToRpm(motor.BaseSpeed())) << " rpm: constant torque "
+      << Fmt("%.6g", motor.RatedTorque())
+      << " N m below it; nothing above it (a permanent magnet has no field to weaken)\n";
+  else if (s.rated_current_a > 0)
     o << "  base speed " << Fmt("%.6g", RadPerSToRpm(motor.BaseSpeed())) << " rpm: constant torque "
       << Fmt("%.6g", motor.RatedTorque()) << " N m below it, constant power "
       << Fmt("%.6g", motor.RatedTorque() * motor.BaseSpeed()) << " W above it\n";
@@ -132,8 +230,11 @@ int Motor(std::ostream& o, const internal::TrainFile& f, const internal::TrainRe
     const ControlledPoint& c = *r.controlled;
     o << "  speed command " << Fmt("%.6g", RadPerSToRpm(*f.speed_command_rad_s))
       << " rpm: " << ToString(c.region) << "\n  armature voltage "
-      << Fmt("%.6g", c.armature_voltage_v) << " V, field current " << Fmt("%.6g", c.field_current_a)
-      << " A, armature current " << Fmt("%.6g", c.armature_current_a) << " A, motor torque "
+      << Fmt("%.6g", c.armature_voltage_v) << " V, "
+      << (s.type == DcMotorType::kSeparatelyExcited || s.type == DcMotorType::kShunt
+              ? "field current " + Fmt("%.6g", c.field_current_a) + " A, "
+              : std::string())
+      << "armature current " << Fmt("%.6g", c.armature_current_a) << " A, motor torque "
       << Fmt("%.6g", c.motor_torque_nm) << " N m: " << c.message << "\n";
     return c.feasible ? kExitOk : kExitNotConverged;
   }
@@ -154,19 +255,37 @@ int Motor(std::ostream& o, const internal::TrainFile& f, const internal::TrainRe
   return p.usable() ? kExitOk : kExitNotConverged;
 }
 
-void WriteCsv(const std::string& path, const internal::TrainFile& f, const TrainSolution& s) {
-  std::ofstream out(path);
-  if (!out)
-    throw InputError(
-        InputProblem{path, 0, "--csv", path, "cannot be written", "a writable file path"});
-  out << "member,kind,teeth,speed_rad_s,speed_rpm,speed_m_s\n";
+// The member table as CSV: teeth empty for carriers and racks; a bevel planet's speed
+// columns empty (its spin relative to the carrier in its own column); torque_nm (racks:
+// force_n) empty where no external torque acts.
+std::string SpeedsCsv(const internal::TrainFile& f, const TrainSolution& s, const TrainTorques& t) {
+  std::ostringstream out;
+  out << "member,kind,teeth,worm_hand,speed_rad_s,speed_rpm,speed_m_s,"
+         "spin_relative_to_carrier_rad_s,torque_nm,force_n\n";
   for (size_t i = 0; i < f.spec.members.size(); ++i) {
     const TrainMember& m = f.spec.members[i];
     const bool rack = m.kind == MemberKind::kRack;
-    out << m.name << "," << ToString(m.kind) << "," << m.teeth << ","
-        << (rack ? "" : Fmt("%.10g", s.speed[i])) << ","
-        << (rack ? "" : Fmt("%.10g", RadPerSToRpm(s.speed[i]))) << ","
-        << (rack ? Fmt("%.10g", s.speed[i]) : "") << "\n";
+    const bool bevel_planet = BevelPlanet(f.spec, m);
+    const bool absolute = !rack && !bevel_planet;
+    const std::string torque = t.solved && t.torque[i] ? Fmt("%.10g", *t.torque[i]) : "";
+    out << m.name << "," << ToString(m.kind) << ","
+        << (m.kind == MemberKind::kGear ? std::to_string(m.teeth) : "") << ","
+        << ToString(m.worm_hand) << "," << (absolute ? Fmt("%.10g", s.speed[i]) : "") << ","
+        << (absolute ? Fmt("%.10g", RadPerSToRpm(s.speed[i])) : "") << ","
+        << (rack ? Fmt("%.10g", s.speed[i]) : "") << ","
+        << (bevel_planet ? Fmt("%.10g", s.speed[i] - s.speed[f.spec.Index(m.carrier)]) : "") << ","
+        << (rack ? "" : torque) << "," << (rack ? torque : "") << "\n";
+  }
+  return out.str();
+}
+
+void WriteCsv(const std::string& path, const std::string& text) {
+  try {
+    internal::WriteTextAtomically(path, text);
+  } catch (const std::filesystem::filesystem_error& e) {
+    throw InputError(InputProblem{path, 0, "--csv", path,
+                                  std::string("cannot be written: ") + e.code().message(),
+                                  "a writable file path"});
   }
 }
 
@@ -182,6 +301,9 @@ Command AddTrainCommand(CLI::App& app) {
   return {sub, [file, csv]() {
             const internal::TrainFile f = internal::ReadTrainFile(*file);
             const internal::TrainResult r = internal::SolveTrainFile(f);
+            // The CSV first: a path that cannot be written fails before any report.
+            if (!csv->empty() && !f.spec.members.empty())
+              WriteCsv(*csv, SpeedsCsv(f, r.solution, r.torques));
             std::ostream& o = std::cout;
             o << "Train file " << f.path << (f.name.empty() ? "" : ": " + f.name) << "\n";
             int code = kExitOk;
@@ -189,9 +311,9 @@ Command AddTrainCommand(CLI::App& app) {
               Speeds(o, f, r.solution);
               Tables(o, r.tables);
               Planets(o, f);
-              if (!csv->empty()) WriteCsv(*csv, f, r.solution);
             }
             if (f.motor) code = Motor(o, f, r);
+            if (!f.spec.members.empty()) Torques(o, f, r.solution, r.torques, f.motor.has_value());
             return code;
           }};
 }

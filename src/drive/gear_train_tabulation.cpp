@@ -77,16 +77,27 @@ std::vector<TabulationTable> TabulateEpicyclic(const GearTrainSpec& spec,
     }
     const double w_arm = solution.speed[c];
     const double w_ref = solution.speed[spec.Index(reference)];
-    TabulationRow r1{"arm " + arm.name + " fixed, +1 turn of " + reference, ratio};
+    // "arm fixed" for a carrier named arm, not "arm arm fixed".
+    const std::string fixed = (arm.name == "arm" ? "arm" : "arm " + arm.name) + " fixed, ";
+    TabulationRow r1{fixed + "+1 turn of " + reference, ratio};
     TabulationRow r2{"whole train locked to " + arm.name + ", turned " + Num(w_arm), {}};
-    TabulationRow r3{"arm " + arm.name + " fixed, " + reference + " turned " + Num(w_ref - w_arm),
-                     {}};
+    TabulationRow r3{fixed + reference + " turned " + Num(w_ref - w_arm), {}};
     TabulationRow r4{"absolute (sum of the two rows above)", {}};
     for (size_t k = 0; k < cols.size(); ++k) {
       r2.values.push_back(w_arm);
+      // A bevel planet turns about its own axis, across the arm's: its spin relative to the
+      // arm (row 3) is meaningful, a sum with the arm's speed (row 4) is not.
+      const TrainMember& m = spec.members[cols[k]];
+      const bool bevel_planet =
+          m.carrier == arm.name &&
+          std::any_of(spec.meshes.begin(), spec.meshes.end(), [&](const TrainMesh& mesh) {
+            return mesh.kind == MeshKind::kBevel && (mesh.a == m.name || mesh.b == m.name);
+          });
       if (ratio[k]) {
         r3.values.push_back(*ratio[k] * (w_ref - w_arm));
-        r4.values.push_back(w_arm + *ratio[k] * (w_ref - w_arm));
+        r4.values.push_back(bevel_planet
+                                ? std::nullopt
+                                : std::optional<double>(w_arm + *ratio[k] * (w_ref - w_arm)));
       } else {
         r3.values.push_back(std::nullopt);
         r4.values.push_back(std::nullopt);

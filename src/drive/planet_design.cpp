@@ -58,7 +58,10 @@ PlanetRules CheckPlanetRules(const PlanetarySet& set) {
   const double zp = r.coaxial_planet_teeth;
   const double x = (zp + 2 * set.addendum_coefficient) / (set.sun_teeth + zp);
   r.clearance_limit = x >= 1 ? 2.0 : kPi / std::asin(x);
-  // Largest integer strictly below the limit: tips that just touch do not clear.
+  // Largest integer strictly below the limit: tips that just touch do not clear, and a limit
+  // that is an integer up to round-off (5.999999999999999) is that integer.
+  const double whole = std::round(r.clearance_limit);
+  if (std::abs(r.clearance_limit - whole) < 1e-9 * r.clearance_limit) r.clearance_limit = whole;
   r.max_by_clearance = static_cast<int>(std::ceil(r.clearance_limit)) - 1;
   if (r.max_by_clearance < 1) r.max_by_clearance = 1;
   for (int n = 1; n <= r.max_by_clearance; ++n)

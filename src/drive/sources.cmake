@@ -11,4 +11,5 @@ list(APPEND TEHL_SOURCES
   src/drive/dc_motor.cpp
   src/drive/motor_schema.cpp
   src/drive/train_reader.cpp
+  src/drive/train_checks.cpp
 )

@@ -9,9 +9,11 @@
 #include <sstream>
 #include <toml.hpp>
 
+#include "base/gear_module.hpp"
 #include "base/schema.hpp"
 #include "base/toml_guard.hpp"
 #include "drive/motor_schema.hpp"
+#include "drive/train_checks.hpp"
 #include "tehl/units.hpp"
 
 namespace tehl::internal {
@@ -35,7 +37,7 @@ SectionSpec GearSection(const std::string& name) {
       false,
       {Required(Integer("teeth", "-", "", "number of teeth; a worm: thread starts", 1.0, 100000.0),
                 "30"),
-       Positive("module_m", "m", "", "module (needed by a rack's pinion)"),
+       GearModule("module_m", "", "module (needed by a rack's pinion)"),
        Text("worm_hand", "", "makes the gear a worm of this hand", {"right", "left"}),
        Text("shaft", "\"\"", "shaft name: members on one shaft turn together"),
        Text("carrier", "\"\"", "carrier (arm) its axis rides on; \"\" = the frame")}};
@@ -60,7 +62,7 @@ SectionSpec RackSection(const std::string& name) {
   SectionSpec s{"rack." + name,
                 "a rack meshing with a pinion",
                 false,
-                {Positive("module_m", "m", "", "module of the rack (= its pinion's)")}};
+                {GearModule("module_m", "", "module of the rack (= its pinion's)")}};
   for (auto& k : SpeedKeys(true)) s.keys.push_back(k);
   return s;
 }
@@ -187,52 +189,6 @@ class TrainReader {
     }
   }
 
-  void Planets() {
-    for (const TrainMember& c : out_.spec.members) {
-      if (c.kind != MemberKind::kCarrier) continue;
-      const std::string sec = "carrier." + c.name;
-      std::optional<PlanetarySetOnCarrier> found = FindSet(c.name);
-      const bool declared = doc_.Given(sec, "planets");
-      if (!found) {
-        if (declared)
-          doc_.Problem(sec, "planets",
-                       "no simple planetary set (sun, planet, ring) on this "
-                       "carrier to check",
-                       "planets only for a carrier with a sun-planet "
-                       "external mesh and a planet-ring internal mesh");
-        continue;
-      }
-      found->set.addendum_coefficient = doc_.Real(sec, "addendum_coefficient");
-      try {
-        found->rules = CheckPlanetRules(found->set);
-      } catch (const InputError& e) {
-        for (const auto& p : e.problems())
-          doc_.Problem("gear." + (p.key == "sun_teeth"      ? found->sun
-                                  : p.key == "planet_teeth" ? found->planet
-                                                            : found->ring),
-                       "teeth", p.rule, p.allowed);
-        continue;
-      }
-      if (declared) {
-        const int n = static_cast<int>(doc_.Int(sec, "planets"));
-        found->planets = n;
-        const PlanetRules& r = found->rules;
-        if (!r.Assembles(n))
-          doc_.Problem(
-              sec, "planets",
-              "cannot be equally spaced: (z_sun + z_ring)/N = " + std::to_string(r.total_teeth) +
-                  "/" + std::to_string(n) + " is not an integer (seed 001 eq. 2.12)",
-              "a divisor of " + std::to_string(r.total_teeth));
-        if (!r.Clears(n))
-          doc_.Problem(sec, "planets",
-                       "adjacent planet tips would touch: N must be < " +
-                           FormatReal(r.clearance_limit) + " (seed 001 eq. 2.13)",
-                       "at most " + std::to_string(r.max_by_clearance) + " planets");
-      }
-      out_.planetary.push_back(*found);
-    }
-  }
-
  private:
   std::optional<double> Speed(const std::string& sec, bool rack) {
     const std::vector<const char*> keys =
@@ -320,54 +276,40 @@ class TrainReader {
                    "input = the name of the member the motor drives");
       return;
     }
+    // A defaulted member is [train] output's value: the problem is that key's.
+    const bool defaulted = !doc_.Given("load", "member") && doc_.Given("train", "output");
+    const std::string sec = defaulted ? "train" : "load";
+    const std::string key = defaulted ? "output" : "member";
+    const std::string named =
+        defaulted ? "the loaded member (by default [train] output, " + out_.load_member + ")"
+                  : "the loaded member";
     const int loaded = out_.spec.Index(out_.load_member);
     if (loaded < 0)
       doc_.Problem("load", "member", "the loaded member is missing or unknown",
                    "member = a gear or carrier of the train (or [train] output)");
     else if (out_.spec.members[loaded].kind == MemberKind::kRack)
-      doc_.Problem("load", "member", "a load torque needs a rotating member, not a rack",
-                   "the rack's pinion, with the rack force times its pitch radius as torque");
+      doc_.Problem(sec, key, named + " is a rack: a load torque needs a rotating member",
+                   "the rack's pinion, with the rack force times its pitch radius as torque" +
+                       std::string(defaulted ? ", in [load] member" : ""));
+    else if (out_.spec.members[loaded].speed && *out_.spec.members[loaded].speed == 0.0)
+      doc_.Problem(sec, key,
+                   named +
+                       " is held: a held member does no work, and the motor would run "
+                       "at no load",
+                   "a member that turns (the train's output)");
     for (const TrainMember& m : out_.spec.members) {
-      if (m.name == input && m.speed)
-        doc_.Problem(m.where, "speed_rpm",
-                     "the motor gives the speed of " + input +
-                         " (speed "
-                         "given twice)",
+      if (m.name == input && m.speed && *m.speed == 0.0)
+        doc_.Problem(m.where, "held", "the motor drives " + input + ", which is held",
+                     "held = false on the member the motor drives");
+      else if (m.name == input && m.speed)
+        doc_.Problem(m.where, doc_.Given(m.where, "speed_rad_s") ? "speed_rad_s" : "speed_rpm",
+                     "the motor gives the speed of " + input + " (speed given twice)",
                      "no speed on the member the motor drives");
       else if (m.speed && *m.speed != 0.0)
         doc_.Problem(m.where, doc_.Given(m.where, "speed_rad_s") ? "speed_rad_s" : "speed_rpm",
                      "with a motor the only other inputs are held members",
                      "held = true, or no speed");
     }
-  }
-
-  std::optional<PlanetarySetOnCarrier> FindSet(const std::string& carrier) {
-    const GearTrainSpec& s = out_.spec;
-    for (const TrainMember& p : s.members) {
-      if (p.kind != MemberKind::kGear || p.carrier != carrier) continue;
-      std::string sun, ring;
-      for (const TrainMesh& m : s.meshes) {
-        if (m.a != p.name && m.b != p.name) continue;
-        const std::string other = m.a == p.name ? m.b : m.a;
-        const int o = s.Index(other);
-        if (o < 0 || s.members[o].kind != MemberKind::kGear || !s.members[o].carrier.empty())
-          continue;
-        if (m.kind == MeshKind::kExternal && sun.empty()) sun = other;
-        if (m.kind == MeshKind::kInternal && ring.empty() && s.members[o].teeth > p.teeth)
-          ring = other;
-      }
-      if (sun.empty() || ring.empty()) continue;
-      PlanetarySetOnCarrier f;
-      f.carrier = carrier;
-      f.sun = sun;
-      f.planet = p.name;
-      f.ring = ring;
-      f.set.sun_teeth = s.members[s.Index(sun)].teeth;
-      f.set.ring_teeth = s.members[s.Index(ring)].teeth;
-      f.set.planet_teeth = p.teeth;
-      return f;
-    }
-    return std::nullopt;
   }
 
   Document& doc_;
@@ -403,7 +345,7 @@ TrainFile ReadTrainFile(const std::string& path) {
   if (file.spec.members.empty() && !doc.HasSection("motor"))
     doc.Problem("gear", "", "a train file needs gears (or a [motor] on its own)",
                 "[gear.NAME] sections with [mesh.NAME] sections between them");
-  if (doc.problems().empty()) reader.Planets();
+  if (doc.problems().empty()) CheckPlanets(doc, &file);
   doc.ThrowIfProblems();
   return file;
 }
@@ -413,6 +355,7 @@ TrainResult SolveTrainFile(const TrainFile& file) {
   if (!file.motor) {
     r.solution = SolveGearTrain(file.spec);
     r.tables = TabulateEpicyclic(file.spec, r.solution);
+    r.torques = SolveTrainTorques(file.spec, r.solution);
     return r;
   }
   const DcMotor motor(*file.motor);
@@ -444,6 +387,17 @@ TrainResult SolveTrainFile(const TrainFile& file) {
       r.solution = unit;
       for (double& x : r.solution.speed) x = 0.0;
     }
+    // The torques at the motor's torque, the loaded member as output: the train at unit input
+    // speed has the same free motions and the same torques.
+    GearTrainSpec unit_spec = file.spec;
+    for (TrainMember& m : unit_spec.members)
+      if (m.name == file.spec.input)
+        m.speed = 1.0;
+      else if (m.speed)
+        m.speed = 0.0;
+    unit_spec.output = file.load_member;
+    const double t_motor = r.controlled ? r.controlled->motor_torque_nm : r.motor->motor_torque_nm;
+    r.torques = SolveTrainTorques(unit_spec, unit, t_motor);
   }
   return r;
 }

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <string>
 
+#include "base/gear_module.hpp"
 #include "base/schema.hpp"
 
 namespace tehl::internal {
@@ -14,10 +15,6 @@ namespace tehl::internal {
 // The longest [output] name accepted (file names are at most 255 bytes; the result files
 // add suffixes such as "_profiles.png") [-].
 inline constexpr size_t kMaxOutputNameChars = 200;
-
-// The largest module a gear case takes: the largest spur gears (mill and kiln drives) have
-// modules of about 40-50 mm; a module of metres is a module in millimetres [m].
-inline constexpr double kMaxModuleM = 0.1;
 
 // Reads and checks a case file. Problems are collected in the returned Document; callers
 // add their own and then call ThrowIfProblems().

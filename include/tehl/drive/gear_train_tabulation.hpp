@@ -3,7 +3,8 @@
 //   "arm fixed, +1 turn of R"       the ratios relative to the arm (Willis values),
 //   "whole train locked to the arm" every member turns with the arm at w_arm,
 //   "arm fixed, R turned w_R-w_arm" the ratios times the reference gear's relative speed,
-//   "absolute"                      the sum of the two rows above = the solved speeds.
+//   "absolute"                      the sum of the two rows above = the solved speeds
+//                                   (empty for a bevel planet: its axis is not the arm's).
 // The group of a carrier: the carrier, the gears riding on it and the gears meshing with
 // those. The reference gear R: the first gear of the group on a fixed axis that is driven or
 // held, else the first gear of the group on a fixed axis, else its first gear.

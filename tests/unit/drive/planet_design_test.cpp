@@ -22,6 +22,14 @@ TEST(PlanetRules, Seed001Example211) {
   EXPECT_EQ(r.max_planets, 7);
 }
 
+// Sun 24, ring 64, planet 20: (20 + 2)/(24 + 20) = 1/2, asin = 30 deg, N < 180/30 = 6
+// exactly (eq. 2.13), so at most 5 planets; the limit is 6, not 5.999999999999999.
+TEST(PlanetRules, IntegerClearanceLimitIsThatInteger) {
+  const PlanetRules r = CheckPlanetRules({24, 64, std::nullopt, 1.0});
+  EXPECT_EQ(r.clearance_limit, 6.0);
+  EXPECT_EQ(r.max_by_clearance, 5);
+}
+
 // Example 2.12 (Fig. 2.18): (N4 + 2)/(N4 + N5) = 17/39, N3 + N5 = 78: n_max = 6.97,
 // n = 1, 2, 3, 6. Teeth as read in the extraction: planet 15, sun 24, ring 54.
 TEST(PlanetRules, Seed001Example212) {

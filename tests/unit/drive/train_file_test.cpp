@@ -183,6 +183,159 @@ TEST(TrainFile, DeclaredPlanetCountThatCannotBeEquallySpacedIsRejected) {
       << m;
 }
 
+// Seed 001 Example 2.7 (Fig. 2.11) with teeth of gears 2 and 3 and module lines to vary.
+std::string Example27(int z2,
+                      int z3,
+                      const std::string& module_line,
+                      const std::string& carrier_lines = "") {
+  return "[gear.2]\nteeth = " + std::to_string(z2) + "\nspeed_rad_s = 60.0\n" + module_line +
+         "[gear.3]\nteeth = " + std::to_string(z3) + "\nshaft = \"p\"\ncarrier = \"6\"\n" +
+         module_line + "[gear.4]\nteeth = 28\nshaft = \"p\"\ncarrier = \"6\"\n" + module_line +
+         "[gear.5]\nteeth = 20\n" + module_line + "[gear.7]\nteeth = 76\nheld = true\n" +
+         module_line + "[carrier.6]\n" + carrier_lines +
+         "[mesh.2-3]\na = \"2\"\nb = \"3\"\n[mesh.4-5]\na = \"4\"\nb = \"5\"\n"
+         "[mesh.4-7]\na = \"4\"\nb = \"7\"\nkind = \"internal\"\n";
+}
+
+std::string Report(const std::string& text, int* code) {
+  const std::string path = testing::UniqueTempPath("train.toml");
+  std::ofstream(path) << text;
+  const auto r = testing::RunTehl("train '" + path + "'");
+  std::remove(path.c_str());
+  *code = r.exit_code;
+  return r.out + r.err;
+}
+
+TEST(TrainFile, CompoundPlanetStepsMustShareTheirCentreDistance) {
+  // Module 2 mm everywhere, gear 3 at 40 teeth: the 2-3 mesh puts the planet shaft at
+  // 2 (18 + 40)/2 = 58 mm from the central axis, the 4-5 and 4-7 meshes at 2 (28 + 20)/2 =
+  // 2 (76 - 28)/2 = 48 mm: 10 mm = 5 modules apart, more than profile shift bridges.
+  const std::string m = Problems(Example27(18, 40, "module_m = 0.002\n"));
+  EXPECT_NE(m.find("mesh.2-3.b"), std::string::npos) << m;
+  EXPECT_NE(m.find("58 mm"), std::string::npos) << m;
+  EXPECT_NE(m.find("48 mm"), std::string::npos) << m;
+  // The document's teeth: 2 (18 + 30)/2 = 48 mm as well.
+  EXPECT_EQ(Problems(Example27(18, 30, "module_m = 0.002\n")), "");
+}
+
+TEST(TrainFile, EveryPlanetGearKeepsTheTipClearanceOfTheDeclaredCount) {
+  // Gears 2 and 3 at 12 and 36 teeth (2 (12 + 36)/2 = 48 mm: coaxial with the 4-5 step).
+  // Set 5-4-7 alone: N < 180 / asin(30/48) = 4.65 and 96/N integer, so 4 planets pass.
+  // Gear 3: d_a = m (36 + 2) = 76 mm on a = 48 mm: N < 180 / asin(38/48) = 3.44 (eq. 2.13
+  // before the module cancels): 4 planets touch.
+  const std::string m = Problems(Example27(12, 36, "module_m = 0.002\n", "planets = 4\n"));
+  EXPECT_NE(m.find("carrier.6.planets = 4: adjacent tips of planet gear 3 would touch: N < 3.439"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("at most 3 planets"), std::string::npos) << m;
+  // Without modules gear 3 still meshes central gear 2: a / m = 24, the same limit.
+  EXPECT_NE(Problems(Example27(12, 36, "", "planets = 4\n")).find("N < 3.439"), std::string::npos);
+  // 3 planets pass; without modules the steps' centre distances are not compared, and the
+  // report says so.
+  int code = -1;
+  const std::string out = Report(Example27(12, 36, "", "planets = 3\n"), &code);
+  EXPECT_EQ(code, 0) << out;
+  EXPECT_NE(out.find("are not compared (no module_m on every step)"), std::string::npos) << out;
+  EXPECT_NE(out.find("declared 3: fits the rules checked"), std::string::npos) << out;
+}
+
+TEST(TrainFile, ModuleInMillimetresIsRejected) {
+  const std::string m = Problems(
+      "[gear.P]\nteeth = 20\nmodule_m = 2.0\nspeed_rpm = 100.0\n[rack.R]\n"
+      "[mesh.PR]\na = \"P\"\nb = \"R\"\nkind = \"rack\"\n");
+  EXPECT_NE(m.find("F:3: gear.P.module_m = 2.0: out of range"), std::string::npos) << m;
+  EXPECT_NE(m.find("in millimetres?"), std::string::npos) << m;
+}
+
+TEST(TrainCommand, BevelPlanetSpinIsPrintedRelativeToItsCarrier) {
+  // Seed 001 Example 2.8: w4 = +100, arm 35; bevel 4 (30) - 5 (60):
+  // w5 - w_arm = -(30/60)(100 - 35) = -32.5 rad/s.
+  const auto r = testing::RunTehl("train '" + Case("seed001_ex2_8_bevel_differential") + "'");
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("spins -32.5 rad/s (-310.352 rpm) about its own axis, relative to "
+                       "carrier A"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("looking along the common axis"), std::string::npos) << r.out;
+}
+
+TEST(TrainCommand, PlanetaryReducerTorquesPerNewtonMetreOnTheSun) {
+  // Sun 50 driven, ring 90 held, arm output: T_arm = -(1 + 90/50) = -2.8 N m, the frame holds
+  // the ring with +90/50 = +1.8 N m (train_torques_test.cpp); -2.8 = -1 / (1/2.8).
+  const Solved s = Solve("seed001_ex2_11_planetary_reducer");
+  ASSERT_TRUE(s.result.torques.solved) << s.result.torques.message;
+  EXPECT_NEAR(*s.result.torques.torque[s.file.spec.Index("arm")], -2.8, 1e-12);
+  EXPECT_NEAR(*s.result.torques.torque[s.file.spec.Index("ring")], 1.8, 1e-12);
+  const std::string csv = testing::UniqueTempPath("speeds.csv");
+  const auto r = testing::RunTehl("train '" + Case("seed001_ex2_11_planetary_reducer") +
+                                  "' --csv '" + csv + "'");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("-2.8 N m  output (the load)"), std::string::npos) << r.out;
+  std::ifstream in(csv);
+  std::string header, sun, planet, ring, arm;
+  std::getline(in, header);
+  std::getline(in, sun);
+  std::getline(in, planet);
+  std::getline(in, ring);
+  std::getline(in, arm);
+  EXPECT_NE(header.find(",worm_hand,"), std::string::npos) << header;
+  EXPECT_NE(header.find(",torque_nm,"), std::string::npos) << header;
+  EXPECT_EQ(arm.rfind("arm,carrier,,,", 0), 0u) << arm;  // no teeth, no hand
+  EXPECT_NE(arm.find(",-2.8,"), std::string::npos) << arm;
+  EXPECT_NE(ring.find(",1.8,"), std::string::npos) << ring;
+  std::remove(csv.c_str());
+}
+
+TEST(TrainCommand, UnwritableCsvFailsBeforeTheReport) {
+  const auto r =
+      testing::RunTehl("train '" + Case("reverted") + "' --csv /proc/no_such_folder/speeds.csv");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_EQ(r.out.find("Speeds"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("--csv"), std::string::npos) << r.err;
+}
+
+TEST(TrainFile, LoadOnAHeldMemberIsRejected) {
+  const std::string planetary =
+      "[train]\ninput = \"sun\"\noutput = \"arm\"\n[gear.sun]\nteeth = 50\n"
+      "[gear.planet]\nteeth = 20\ncarrier = \"arm\"\n[gear.ring]\nteeth = 90\nheld = true\n"
+      "[carrier.arm]\n[mesh.sp]\na = \"sun\"\nb = \"planet\"\n"
+      "[mesh.pr]\na = \"planet\"\nb = \"ring\"\nkind = \"internal\"\n"
+      "[motor]\ntype = \"permanent_magnet\"\nsupply_voltage_v = 24.0\n"
+      "armature_resistance_ohm = 0.5\nspeed_constant = 0.05\n";
+  const std::string m = Problems(planetary + "[load]\nmember = \"ring\"\ntorque_nm = 1.0\n");
+  EXPECT_NE(m.find("load.member = \"ring\": the loaded member is held: a held member does no work"),
+            std::string::npos)
+      << m;
+  // The same motor on the arm's load runs: 1 N m on the arm is 1/2.8 N m at the sun.
+  EXPECT_EQ(Problems(planetary + "[load]\ntorque_nm = 1.0\n"), "");
+}
+
+TEST(TrainCommand, PermanentMagnetMotorHasNoFieldToReport) {
+  const std::string text =
+      "[train]\ninput = \"A\"\noutput = \"B\"\n[gear.A]\nteeth = 20\n[gear.B]\nteeth = 40\n"
+      "[mesh.AB]\na = \"A\"\nb = \"B\"\n[motor]\ntype = \"permanent_magnet\"\n"
+      "supply_voltage_v = 24.0\narmature_resistance_ohm = 0.5\nspeed_constant = 0.05\n"
+      "rated_current_a = 10.0\nspeed_command_rpm = 1000.0\n[load]\ntorque_nm = 0.5\n";
+  int code = -1;
+  const std::string out = Report(text, &code);
+  EXPECT_EQ(code, 0) << out;
+  EXPECT_EQ(out.find("field current"), std::string::npos) << out;
+  EXPECT_EQ(out.find("constant power"), std::string::npos) << out;
+  EXPECT_NE(out.find("no field to weaken"), std::string::npos) << out;
+}
+
+TEST(TrainCommand, RackTrainValueCarriesItsUnit) {
+  // Pinion 20 teeth, module 2 mm: v = w m z / 2 = 0.02 w, w_R / w_P = 0.02 m/rad.
+  int code = -1;
+  const std::string out = Report(
+      "[train]\ninput = \"P\"\noutput = \"R\"\n[gear.P]\nteeth = 20\nmodule_m = 0.002\n"
+      "speed_rad_s = 10.0\n[rack.R]\n[mesh.PR]\na = \"P\"\nb = \"R\"\nkind = \"rack\"\n",
+      &code);
+  EXPECT_EQ(code, 0) << out;
+  EXPECT_NE(out.find("Train value w_R / w_P = 0.02 m/rad"), std::string::npos) << out;
+}
+
 }  // namespace
 }  // namespace tehl
 
