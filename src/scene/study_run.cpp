@@ -1,5 +1,6 @@
 #include "tehl/scene/study_run.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <exception>
@@ -8,6 +9,7 @@
 #include <mutex>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <thread>
 
 #include "scene/mesh_cycle_checkpoint.hpp"
@@ -102,18 +104,32 @@ std::vector<SceneRow> RunStudyScenes(const Study& study,
   std::atomic<size_t> next{0};
   std::mutex report;
   int done = 0;
+  // The first exception of any thread (a scene's own failure is a row, not an exception):
+  // the threads take no further scene, and it is rethrown once all of them are joined.
+  std::exception_ptr error;
   auto work = [&] {
     for (size_t i; (i = next.fetch_add(1)) < ids.size();) {
-      rows[i] = RunStudyScene(study, study.scenes.at(ids[i]), options.resume);
-      std::lock_guard<std::mutex> lock(report);
-      ++done;
-      if (options.on_scene) options.on_scene(rows[i], done, static_cast<int>(ids.size()));
+      try {
+        rows[i] = RunStudyScene(study, study.scenes.at(ids[i]), options.resume);
+        std::lock_guard<std::mutex> lock(report);
+        ++done;
+        if (options.on_scene) options.on_scene(rows[i], done, static_cast<int>(ids.size()));
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(report);
+        if (!error) error = std::current_exception();
+        next = ids.size();
+      }
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  try {
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  } catch (const std::system_error&) {
+    // No more threads to be had: the ones started (and this one) run all the scenes.
+  }
   work();
   for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
   return rows;
 }
 

@@ -28,7 +28,9 @@ struct SweepOptions {
 SceneRow RunStudyScene(const Study& study, const StudyScene& scene, bool resume);
 
 // Runs the scenes `ids` (indices into study.scenes) on options.threads threads; the rows
-// come back in the order of `ids`. The scene files must exist (WriteSceneFiles).
+// come back in the order of `ids`. The scene files must exist (WriteSceneFiles). Any other
+// exception (an id out of range, one thrown by on_scene) stops the pool: no further scene
+// starts, and the first is rethrown once every thread has finished.
 std::vector<SceneRow> RunStudyScenes(const Study& study,
                                      const std::vector<int>& ids,
                                      const SweepOptions& options);

@@ -1,0 +1,76 @@
+// The scene pool of a study: a scene's own failure is its row; an exception of the pool (a
+// scene id out of range, the progress callback) reaches the caller once every thread is
+// joined.
+#include "tehl/scene/study_run.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "support/scratch_path.hpp"
+
+namespace tehl {
+namespace {
+namespace fs = std::filesystem;
+
+// A contact study of `n` scenes whose case files do not exist: each scene fails at once.
+Study MissingScenes(int n) {
+  Study s;
+  s.gear = false;
+  s.output_dir = testing::ScratchPath("tehl_study_run", "out");
+  fs::create_directories(s.ScenesDir());
+  for (int i = 0; i < n; ++i) {
+    StudyScene sc;
+    sc.id = i;
+    sc.name = "scene_000" + std::to_string(i);
+    sc.case_path = (fs::path(s.ScenesDir()) / (sc.name + ".toml")).string();
+    s.scenes.push_back(sc);
+  }
+  return s;
+}
+
+TEST(RunStudyScenes, ASceneThatFailsIsARowAndTheOthersGoOn) {
+  const Study s = MissingScenes(3);
+  SweepOptions o;
+  o.threads = 2;
+  const std::vector<SceneRow> rows = RunStudyScenes(s, {0, 1, 2}, o);
+  ASSERT_EQ(rows.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(rows[i].scene, i);
+    EXPECT_EQ(rows[i].status.rfind("failed", 0), 0u) << rows[i].status;
+  }
+}
+
+TEST(RunStudyScenes, AnExceptionOfTheCallbackReachesTheCallerAfterTheThreadsAreJoined) {
+  const Study s = MissingScenes(4);
+  SweepOptions o;
+  o.threads = 2;
+  std::atomic<int> calls{0};
+  o.on_scene = [&](const SceneRow&, int, int) {
+    ++calls;
+    throw std::runtime_error("progress line not written");
+  };
+  try {
+    RunStudyScenes(s, {0, 1, 2, 3}, o);
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "progress line not written");
+  }
+  // After the first exception no thread takes another scene: at most one per thread.
+  EXPECT_GE(calls.load(), 1);
+  EXPECT_LE(calls.load(), 2);
+}
+
+TEST(RunStudyScenes, ASceneIdOutOfRangeIsAnErrorOfTheCaller) {
+  const Study s = MissingScenes(1);
+  SweepOptions o;
+  o.threads = 2;
+  EXPECT_THROW(RunStudyScenes(s, {7, 0}, o), std::out_of_range);
+  EXPECT_THROW(RunStudyScenes(s, {0, 7}, o), std::out_of_range);
+}
+
+}  // namespace
+}  // namespace tehl
