@@ -12,6 +12,11 @@ void WriteTextAtomically(const std::string& path, const std::string& text) {
   const fs::path final_path(path);
   if (!final_path.parent_path().empty()) fs::create_directories(final_path.parent_path());
   const std::string part = path + ".part";
+  // Only a file of our own goes: a folder in the way of the temporary file stays as it is.
+  auto remove_part = [&] {
+    std::error_code ignored;
+    if (fs::is_regular_file(part, ignored)) fs::remove(part, ignored);
+  };
   {
     errno = 0;  // so that a failure below reports its own cause
     std::ofstream out(part, std::ios::binary | std::ios::trunc);
@@ -19,12 +24,16 @@ void WriteTextAtomically(const std::string& path, const std::string& text) {
     out.flush();
     if (!out) {
       const std::error_code why(errno != 0 ? errno : EIO, std::generic_category());
-      std::error_code ignored;
-      if (fs::is_regular_file(part, ignored)) fs::remove(part, ignored);
+      remove_part();
       throw fs::filesystem_error("cannot write", part, why);
     }
   }
-  fs::rename(part, final_path);
+  std::error_code why;
+  fs::rename(part, final_path, why);
+  if (why) {  // e.g. a folder under the final name
+    remove_part();
+    throw fs::filesystem_error("cannot replace", final_path, why);
+  }
 }
 
 }  // namespace tehl::internal

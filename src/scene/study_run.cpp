@@ -38,15 +38,21 @@ bool SameScene(const std::string& result, const StudyScene& scene) {
   return std::getline(in, stored) && stored == SceneFingerprint(scene);
 }
 
+// A fingerprint that cannot be kept costs nothing but a rerun of the scene by --resume; its
+// temporary file goes either way (a folder in its way is not ours to remove).
 void KeepFingerprint(const std::string& result, const StudyScene& scene) {
+  namespace fs = std::filesystem;
   const std::string path = FingerprintPath(result), part = path + ".part";
+  std::error_code ec;
+  bool written = false;
   {
     std::ofstream out(part);
     out << SceneFingerprint(scene) << "\n";
-    if (!out) return;  // resume then runs the scene again: nothing is lost
+    out.close();
+    written = static_cast<bool>(out);
   }
-  std::error_code ec;
-  std::filesystem::rename(part, path, ec);
+  if (written) fs::rename(part, path, ec);
+  if ((!written || ec) && fs::is_regular_file(part, ec)) fs::remove(part, ec);
 }
 
 }  // namespace

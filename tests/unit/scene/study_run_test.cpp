@@ -1,6 +1,6 @@
 // The scene pool of a study: a scene's own failure is its row; an exception of the pool (a
 // scene id out of range, the progress callback) reaches the caller once every thread is
-// joined.
+// joined; a scene's fingerprint leaves no temporary file behind.
 #include "tehl/scene/study_run.hpp"
 
 #include <gtest/gtest.h>
@@ -70,6 +70,18 @@ TEST(RunStudyScenes, ASceneIdOutOfRangeIsAnErrorOfTheCaller) {
   o.threads = 2;
   EXPECT_THROW(RunStudyScenes(s, {7, 0}, o), std::out_of_range);
   EXPECT_THROW(RunStudyScenes(s, {0, 7}, o), std::out_of_range);
+}
+
+// A folder under the fingerprint's name: the scene runs (and fails here) without it, and its
+// temporary file goes.
+TEST(RunStudyScene, AFingerprintThatCannotBeKeptLeavesNoTemporaryFile) {
+  const Study s = MissingScenes(1);
+  const std::string fingerprint = s.ResultPath(s.scenes[0]) + ".case";
+  fs::create_directories(fingerprint + "/inside");
+  const SceneRow r = RunStudyScene(s, s.scenes[0], false);
+  EXPECT_EQ(r.status.rfind("failed", 0), 0u) << r.status;
+  EXPECT_TRUE(fs::is_directory(fingerprint + "/inside"));
+  EXPECT_FALSE(fs::exists(fingerprint + ".part"));
 }
 
 }  // namespace

@@ -1,0 +1,63 @@
+// Text files written atomically: the file under its final name is complete, and a write or a
+// rename that fails is a filesystem_error naming the path that leaves no temporary file behind.
+#include "io/atomic_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support/scratch_path.hpp"
+
+namespace tehl::internal {
+namespace {
+namespace fs = std::filesystem;
+
+std::string Contents(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(WriteTextAtomically, ReplacesTheFileAndLeavesNoTemporaryFile) {
+  const std::string path = testing::ScratchPath("tehl_atomic", "sub/table.csv");
+  WriteTextAtomically(path, "old\n");
+  WriteTextAtomically(path, "new\n");
+  EXPECT_EQ(Contents(path), "new\n");
+  EXPECT_FALSE(fs::exists(path + ".part"));
+}
+
+// A folder under the final name: the text is written, the rename fails.
+TEST(WriteTextAtomically, AFailedRenameIsAFilesystemErrorAndLeavesNoTemporaryFile) {
+  const std::string path = testing::ScratchPath("tehl_atomic", "index.csv");
+  fs::create_directories(path + "/inside");
+  try {
+    WriteTextAtomically(path, "scene,status\n");
+    FAIL() << "written over a folder";
+  } catch (const fs::filesystem_error& e) {
+    EXPECT_EQ(e.path1().string(), path);
+    EXPECT_TRUE(e.code()) << e.what();
+  }
+  EXPECT_TRUE(fs::is_directory(path + "/inside"));
+  EXPECT_FALSE(fs::exists(path + ".part"));
+}
+
+// A folder in the way of the temporary file: not written, and the folder is not ours to remove.
+TEST(WriteTextAtomically, AFailedWriteIsAFilesystemErrorAndKeepsAFolderInTheWay) {
+  const std::string path = testing::ScratchPath("tehl_atomic", "blocked.csv");
+  fs::create_directories(path + ".part");
+  try {
+    WriteTextAtomically(path, "scene,status\n");
+    FAIL() << "written";
+  } catch (const fs::filesystem_error& e) {
+    EXPECT_EQ(e.path1().string(), path + ".part");
+    EXPECT_TRUE(e.code()) << e.what();
+  }
+  EXPECT_TRUE(fs::is_directory(path + ".part"));
+  EXPECT_FALSE(fs::exists(path));
+}
+
+}  // namespace
+}  // namespace tehl::internal
