@@ -3,9 +3,12 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <system_error>
+#include <utility>
 
 #include "io/atomic_file.hpp"
 #include "scene/case_reader.hpp"
@@ -81,8 +84,18 @@ void AddPathOverrides(const Document& base, const std::string& base_path,
 
 // Checks a scene's case text with the readers of `tehl run` (schema, cross-key rules, gear
 // geometry, film inputs); returns their problems.
+// A scene file that cannot be written (a full disk) is that, not problems of the case.
 std::vector<InputProblem> CheckScene(const std::string& text, const std::string& tmp_path) {
-  std::ofstream(tmp_path) << text;
+  {
+    errno = 0;  // so that a failure below reports its own cause
+    std::ofstream out(tmp_path, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.close();
+    if (!out)
+      throw fs::filesystem_error(
+          "cannot write", tmp_path,
+          std::error_code(errno != 0 ? errno : EIO, std::generic_category()));
+  }
   Document doc = internal::ReadCaseDocument(tmp_path);
   if (doc.problems().empty()) {
     if (doc.HasSection("gear")) internal::ReadGearCase(doc);
@@ -130,6 +143,22 @@ InputProblem SceneProblem(const std::string& study_path, const Study& s, const S
           p.allowed};
 }
 
+// The folder of the scene files being checked, removed however the check ends.
+class ScratchFolder {
+ public:
+  explicit ScratchFolder(fs::path path) : path_(std::move(path)) { fs::create_directories(path_); }
+  ~ScratchFolder() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
 }  // namespace
 
 std::string Study::ScenesDir() const { return (fs::path(output_dir) / "scenes").string(); }
@@ -159,10 +188,9 @@ Study ReadStudy(const std::string& study_path, const StudyReadOptions& options) 
   const std::string base_text = base.ToToml();
   const std::string scenes_dir = fs::absolute(s.ScenesDir()).lexically_normal().string();
 
-  const fs::path tmp = fs::temp_directory_path() /
-                       ("tehl_study_" + std::to_string(getpid()) + "_" +
-                        std::to_string(reinterpret_cast<std::uintptr_t>(&s)));
-  fs::create_directories(tmp);
+  const ScratchFolder tmp(fs::temp_directory_path() /
+                          ("tehl_study_" + std::to_string(getpid()) + "_" +
+                           std::to_string(reinterpret_cast<std::uintptr_t>(&s))));
   ProblemList problems;
   std::set<std::string> seen;
   int id = 0;
@@ -183,7 +211,7 @@ Study ReadStudy(const std::string& study_path, const StudyReadOptions& options) 
     o.push_back({"output.directory", internal::FormatValue(internal::Value(scenes_dir))});
     o.push_back({"output.name", internal::FormatValue(internal::Value(sc.name))});
     sc.case_text = header + internal::ApplyCaseOverrides(base_text, o);
-    for (const auto& p : CheckScene(sc.case_text, (tmp / (sc.name + ".toml")).string())) {
+    for (const auto& p : CheckScene(sc.case_text, (tmp.path() / (sc.name + ".toml")).string())) {
       InputProblem q = SceneProblem(study_path, s, sc, p);
       // One report per offending value, not one per scene of the grid that holds it.
       if (seen.insert(std::to_string(q.line) + q.value + p.key + p.rule).second)
@@ -191,8 +219,6 @@ Study ReadStudy(const std::string& study_path, const StudyReadOptions& options) 
     }
     s.scenes.push_back(std::move(sc));
   }
-  std::error_code ec;
-  fs::remove_all(tmp, ec);
   problems.ThrowIfAny();
   return s;
 }

@@ -1,19 +1,24 @@
 // Study files expand into scenes: grid and zip counts, ranges, overrides applied to the base
-// case, every scene a valid case, problems at the study file's line (docs/studies.md).
+// case, every scene a valid case, problems at the study file's line (docs/studies.md); the
+// scene checks leave nothing in the temporary folder, even when they fail.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "base/schema.hpp"
 #include "scene/case_reader.hpp"
+#include "support/scratch_path.hpp"
 #include "tehl/error.hpp"
 #include "tehl/scene/case_schema.hpp"
 #include "tehl/scene/study.hpp"
-#include "support/scratch_path.hpp"
 
 namespace tehl {
 namespace {
@@ -162,6 +167,63 @@ TEST(StudyExpansion, ZipListsOfUnequalLengthAreRejected) {
   const InputProblem p = FirstProblem(path);
   EXPECT_EQ(p.line, 10);
   EXPECT_EQ(p.key, "vary[2].values");
+}
+
+// TMPDIR set to a fresh folder for the life of the object (the scene checks write there).
+class ScratchTmpdir {
+ public:
+  ScratchTmpdir() : path_(testing::ScratchPath("tehl_study", "tmpdir")) {
+    fs::create_directories(path_);
+    if (const char* old = std::getenv("TMPDIR")) old_ = old;
+    setenv("TMPDIR", path_.c_str(), 1);
+  }
+  ~ScratchTmpdir() {
+    if (old_.empty())
+      unsetenv("TMPDIR");
+    else
+      setenv("TMPDIR", old_.c_str(), 1);
+  }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_, old_;
+};
+
+TEST(StudyExpansion, TheSceneChecksLeaveNothingInTheTemporaryFolder) {
+  const std::string study = WriteStudy(
+      "tmp_clean.toml", "[[vary]]\nkey = \"operating.power_w\"\nvalues = [5000, 10000]\n");
+  const ScratchTmpdir tmp;
+  EXPECT_EQ(ReadStudy(study).scenes.size(), 2u);
+  EXPECT_TRUE(fs::is_empty(tmp.path()));
+}
+
+// A scene file that cannot be written for its check (here: files limited to 64 bytes, as a full
+// disk would) is a filesystem_error naming it, not made-up problems of the case, and the
+// folder of the checks goes with it.
+TEST(StudyExpansion, ASceneFileThatCannotBeWrittenIsAFilesystemErrorAndLeavesNoFolder) {
+  const std::string study = WriteStudy(
+      "tmp_full.toml", "[[vary]]\nkey = \"operating.power_w\"\nvalues = [5000, 10000]\n");
+  const ScratchTmpdir tmp;
+  rlimit old{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old), 0);
+  rlimit small = old;
+  small.rlim_cur = 64;
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);  // EFBIG instead of the signal
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string thrown;
+  try {
+    ReadStudy(study);
+  } catch (const fs::filesystem_error& e) {
+    thrown = "filesystem_error " + e.path1().string() + ": " + e.code().message();
+    EXPECT_EQ(e.code().value(), EFBIG) << e.what();
+    EXPECT_EQ(e.path1().filename().string(), "scene_0000.toml") << e.what();
+  } catch (const std::exception& e) {
+    thrown = std::string("other: ") + e.what();
+  }
+  setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_EQ(thrown.rfind("filesystem_error", 0), 0u) << thrown;
+  EXPECT_TRUE(fs::is_empty(tmp.path()));
 }
 
 }  // namespace
