@@ -5,7 +5,9 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <exception>
 #include <functional>
+#include <string>
 
 namespace tehl::cli {
 
@@ -28,5 +30,14 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitNotConverged = 1;
 inline constexpr int kExitBadInput = 2;
 inline constexpr int kExitInternal = 3;
+
+// What main() prints on stderr for an error a runner threw, and the exit code: an InputError
+// (its problems) or a std::filesystem::filesystem_error (a folder or file that cannot be
+// written) 2, anything else 3 (an internal error).
+struct CommandError {
+  int exit_code = kExitInternal;
+  std::string message;  // without the final newline
+};
+CommandError DescribeCommandError(const std::exception_ptr& error);
 
 }  // namespace tehl::cli

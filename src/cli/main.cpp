@@ -1,13 +1,11 @@
 // tehl: thermo-elastohydrodynamic lubrication of spur gears. One program, subcommands.
 #include <cstdio>
 #include <exception>
-#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "tehl/error.hpp"
 
 int main(int argc, char** argv) {
   using namespace tehl::cli;
@@ -57,19 +55,10 @@ int main(int argc, char** argv) {
   try {
     for (const auto& c : commands)
       if (c.app->parsed()) return c.run();
-  } catch (const tehl::InputError& e) {
-    std::cerr << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::filesystem::filesystem_error& e) {
-    // Result folders and files come from -o/--output-dir or [output] directory and name.
-    std::cerr << "tehl: cannot write the results: " << e.code().message() << ": "
-              << e.path1().string()
-              << " (allowed: a folder that can be created and written; see -o/--output-dir "
-                 "and [output] directory)\n";
-    return kExitBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "tehl: internal error: " << e.what() << "\n";
-    return kExitInternal;
+  } catch (...) {
+    const CommandError e = DescribeCommandError(std::current_exception());
+    std::cerr << e.message << "\n";
+    return e.exit_code;
   }
   return kExitOk;
 }

@@ -1,6 +1,7 @@
 # The `tehl` program: main.cpp and one file per subcommand (linked into the executable only).
 list(APPEND TEHL_CLI_SOURCES
   src/cli/main.cpp
+  src/cli/command_errors.cpp
   src/cli/case_command.cpp
   src/cli/run_command.cpp
   src/cli/run_notes.cpp

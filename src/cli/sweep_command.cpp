@@ -3,8 +3,10 @@
 // round-robin: scene i on rank i mod K); rank 0 writes the index once every rank is done.
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/sweep_mpi.hpp"
@@ -27,37 +29,57 @@ struct SweepArgs {
   bool quiet = false;
 };
 
-int RunSweep(const SweepArgs& a) {
-  const SweepMpi mpi;
-  Study study;
+// Runs `step` on this rank, then agrees with the other ranks on how it went before any of them
+// makes the next collective call. Returns kExitOk when the step succeeded on every rank; else
+// the exit code of the sweep (the highest of the ranks'), and the lowest rank that had it
+// prints its error: a study with bad input, read alike by every rank, is reported once.
+template <class Step>
+int OnEveryRank(const SweepMpi& mpi, Step&& step) {
+  std::exception_ptr error;
   try {
-    StudyReadOptions ro;
-    ro.output_dir = a.output_dir;
-    study = ReadStudy(a.study, ro);
-  } catch (const InputError&) {
-    if (mpi.rank() == 0) throw;  // every rank finds the same problems: one report
-    return kExitBadInput;
+    step();
+  } catch (...) {
+    error = std::current_exception();
   }
-  if (mpi.rank() == 0) WriteSceneFiles(study);
-  if (a.dry_run) {
-    if (mpi.rank() == 0) {
-      std::printf("%s: %zu scenes (%s of %zu parameters), base %s\n", a.study.c_str(),
-                  study.scenes.size(), study.mode.c_str(), study.parameters.size(),
-                  study.base_case_path.c_str());
-      for (const auto& sc : study.scenes) {
-        std::printf("%s", sc.case_path.c_str());
-        for (size_t i = 0; i < study.parameters.size(); ++i)
-          std::printf("  %s = %s", study.parameters[i].label.c_str(),
-                      study.parameters[i].values_toml[sc.value_index[i]].c_str());
-        std::printf("\n");
-      }
-    }
-    return kExitOk;
+  const CommandError mine = error ? DescribeCommandError(error) : CommandError{kExitOk, ""};
+  const SweepMpi::Outcome all = mpi.Agree(mine.exit_code);
+  if (all.exit_code != kExitOk && all.rank == mpi.rank()) {
+    std::fprintf(stderr, "%s\n", mine.message.c_str());
+    if (mpi.size() > 1)
+      std::fprintf(stderr, "tehl sweep: stopped on rank %d of %d; every rank stops with it\n",
+                   mpi.rank(), mpi.size());
   }
-  mpi.Barrier();  // the scene files are written
+  return all.exit_code;
+}
+
+// The steps of every rank: read the study, write the scene files (rank 0), run this rank's
+// scenes and gather the rows on rank 0 (`all_rows`). Returns the exit code of the sweep so far.
+int RunOnEveryRank(const SweepArgs& a, const SweepMpi& mpi, Study* study, std::string* all_rows) {
+  // The scene threads run while the main thread makes the MPI calls.
+  if (const int code = OnEveryRank(mpi, [&] {
+        if (!mpi.threads_allowed() && !a.dry_run && a.threads != 1)
+          throw InputError(InputProblem{
+              "", 0, "-j/--threads", a.threads > 0 ? std::to_string(a.threads) : "all cores",
+              "this MPI library lets no other thread run beside its calls (its thread level is "
+              "below MPI_THREAD_FUNNELED)",
+              "-j 1, or an MPI built with thread support"});
+      }))
+    return code;
+  if (const int code = OnEveryRank(mpi, [&] {
+        StudyReadOptions ro;
+        ro.output_dir = a.output_dir;
+        *study = ReadStudy(a.study, ro);
+      }))
+    return code;
+  // Agreed: the scene files are written before any rank runs a scene.
+  if (const int code = OnEveryRank(mpi, [&] {
+        if (mpi.rank() == 0) WriteSceneFiles(*study);
+      }))
+    return code;
+  if (a.dry_run) return kExitOk;
 
   std::vector<int> mine;
-  for (int i = mpi.rank(); i < static_cast<int>(study.scenes.size()); i += mpi.size())
+  for (int i = mpi.rank(); i < static_cast<int>(study->scenes.size()); i += mpi.size())
     mine.push_back(i);
   SweepOptions so;
   so.threads = a.threads;
@@ -70,13 +92,52 @@ int RunSweep(const SweepArgs& a) {
                                 : "";
       std::fprintf(stderr, "%s[%d/%d] %s %s%s%s (%.1f s)\n",
                    mpi.size() > 1 ? ("rank " + std::to_string(mpi.rank()) + " ").c_str() : "", done,
-                   total, study.scenes[r.scene].name.c_str(), r.status.c_str(), restarts.c_str(),
+                   total, study->scenes[r.scene].name.c_str(), r.status.c_str(), restarts.c_str(),
                    r.computed ? "" : ", resumed", r.wall_time_s);
     };
-  const std::vector<SceneRow> rows = RunStudyScenes(study, mine, so);
+  std::string rows;
+  if (const int code =
+          OnEveryRank(mpi, [&] { rows = SceneRowsToText(RunStudyScenes(*study, mine, so)); }))
+    return code;
+  *all_rows = mpi.GatherToRoot(rows);
+  return kExitOk;
+}
 
-  const std::string all = mpi.GatherToRoot(SceneRowsToText(rows));
-  if (mpi.rank() != 0) return kExitOk;
+void PrintDryRun(const SweepArgs& a, const Study& study) {
+  std::printf("%s: %zu scenes (%s of %zu parameters), base %s\n", a.study.c_str(),
+              study.scenes.size(), study.mode.c_str(), study.parameters.size(),
+              study.base_case_path.c_str());
+  for (const auto& sc : study.scenes) {
+    std::printf("%s", sc.case_path.c_str());
+    for (size_t i = 0; i < study.parameters.size(); ++i)
+      std::printf("  %s = %s", study.parameters[i].label.c_str(),
+                  study.parameters[i].values_toml[sc.value_index[i]].c_str());
+    std::printf("\n");
+  }
+}
+
+int RunSweep(const SweepArgs& a) {
+  const SweepMpi mpi;
+  Study study;
+  std::string all;
+  int code = kExitOk;
+  try {
+    code = RunOnEveryRank(a, mpi, &study, &all);
+  } catch (...) {
+    // An error outside the agreed steps: the other ranks may be waiting for this one in a
+    // collective call, so all of them end here.
+    if (mpi.size() == 1) throw;
+    const CommandError e = DescribeCommandError(std::current_exception());
+    std::fprintf(stderr, "%s\ntehl sweep: stopped on rank %d of %d; ending every rank\n",
+                 e.message.c_str(), mpi.rank(), mpi.size());
+    mpi.Abort(e.exit_code);
+  }
+  // The ranks are done with each other: rank 0 reports and writes the index.
+  if (code != kExitOk || mpi.rank() != 0) return code;
+  if (a.dry_run) {
+    PrintDryRun(a, study);
+    return kExitOk;
+  }
   const std::vector<SceneRow> gathered = SceneRowsFromText(all);
   const auto paths = WriteStudyIndex(study, gathered);
   int ok = 0, not_converged = 0, failed = 0, resumed = 0, restarted = 0, unresolved_edge = 0,

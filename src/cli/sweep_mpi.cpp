@@ -1,5 +1,6 @@
 #include "cli/sweep_mpi.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 #include <vector>
 
@@ -21,10 +22,11 @@ bool StartedByMpiLauncher() {
 
 SweepMpi::SweepMpi() {
   if (!StartedByMpiLauncher()) return;
-  int provided = 0;
+  int provided = MPI_THREAD_SINGLE;
   // Only the main thread calls MPI; the scene threads never do.
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
   active_ = true;
+  threads_allowed_ = provided >= MPI_THREAD_FUNNELED;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }
@@ -33,8 +35,20 @@ SweepMpi::~SweepMpi() {
   if (active_) MPI_Finalize();
 }
 
-void SweepMpi::Barrier() const {
-  if (active_) MPI_Barrier(MPI_COMM_WORLD);
+SweepMpi::Outcome SweepMpi::Agree(int exit_code) const {
+  if (!active_) return {exit_code, rank_};
+  // MPI_MAXLOC on (value, index) pairs: the highest value, and the lowest index among equals.
+  struct {
+    int value, index;
+  } mine{exit_code, rank_}, all{0, 0};
+  MPI_Allreduce(&mine, &all, 1, MPI_2INT, MPI_MAXLOC, MPI_COMM_WORLD);
+  return {all.value, all.index};
+}
+
+void SweepMpi::Abort(int exit_code) const {
+  std::fflush(nullptr);
+  if (active_) MPI_Abort(MPI_COMM_WORLD, exit_code);
+  std::_Exit(exit_code);
 }
 
 std::string SweepMpi::GatherToRoot(const std::string& text) const {
@@ -55,7 +69,11 @@ std::string SweepMpi::GatherToRoot(const std::string& text) const {
 #else
 SweepMpi::SweepMpi() = default;
 SweepMpi::~SweepMpi() = default;
-void SweepMpi::Barrier() const {}
+SweepMpi::Outcome SweepMpi::Agree(int exit_code) const { return {exit_code, 0}; }
+void SweepMpi::Abort(int exit_code) const {
+  std::fflush(nullptr);
+  std::_Exit(exit_code);
+}
 std::string SweepMpi::GatherToRoot(const std::string& text) const { return text; }
 #endif
 
