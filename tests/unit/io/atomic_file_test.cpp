@@ -59,5 +59,23 @@ TEST(WriteTextAtomically, AFailedWriteIsAFilesystemErrorAndKeepsAFolderInTheWay)
   EXPECT_FALSE(fs::exists(path));
 }
 
+// A device is written in place, never replaced by a regular file (`--csv /dev/stdout`), and a
+// device that refuses the text (/dev/full: no space left) is a filesystem_error naming it.
+TEST(WriteTextAtomically, ADeviceIsWrittenInPlace) {
+  ASSERT_TRUE(fs::is_character_file("/dev/null"));
+  WriteTextAtomically("/dev/null", "x,y\n1,2\n");
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  EXPECT_FALSE(fs::exists("/dev/null.part"));
+  if (!fs::is_character_file("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  try {
+    WriteTextAtomically("/dev/full", std::string(1 << 16, 'x'));
+    FAIL() << "a full device took the text";
+  } catch (const fs::filesystem_error& e) {
+    EXPECT_EQ(e.path1().string(), "/dev/full");
+    EXPECT_EQ(e.code(), std::errc::no_space_on_device) << e.code().message();
+  }
+  EXPECT_TRUE(fs::is_character_file("/dev/full"));
+}
+
 }  // namespace
 }  // namespace tehl::internal
