@@ -5,6 +5,7 @@ list(APPEND TEHL_SOURCES
   src/drive/torsional_model.cpp
   src/drive/dynamic_response.cpp
   src/drive/gear_train.cpp
+  src/drive/train_mesh_rows.cpp
   src/drive/gear_train_tabulation.cpp
   src/drive/train_torques.cpp
   src/drive/planet_design.cpp
