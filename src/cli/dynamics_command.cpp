@@ -3,8 +3,6 @@
 // response at the case's speed (mesh force over a period, the tracked pair's dynamic load
 // along the path) and, with --speeds, the dynamic load factor against the pinion speed as a
 // CSV and a PNG (scripts/plot_dynamics.py).
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -15,8 +13,8 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/python_script.hpp"
 #include "io/csv_table.hpp"
-#include "io/script_path.hpp"
 #include "scene/case_reader.hpp"
 #include "scene/dynamic_load.hpp"
 #include "scene/gear_case.hpp"
@@ -47,25 +45,7 @@ std::vector<double> ParseSpeeds(const std::string& text) {
 }
 
 int RunPlot(const std::string& csv, const std::string& png, const std::string& title) {
-  const std::string script = internal::FindScript("plot_dynamics.py");
-  if (script.empty()) {
-    std::fprintf(stderr,
-                 "tehl dynamics: scripts/plot_dynamics.py not found (set TEHL_SCRIPT_DIR)\n");
-    return kExitInternal;
-  }
-  std::fflush(stdout);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    execl("/usr/bin/python3", "python3", script.c_str(), csv.c_str(), "-o", png.c_str(), "--labels",
-          title.c_str(), static_cast<char*>(nullptr));
-    std::perror("tehl dynamics: cannot start /usr/bin/python3");
-    _exit(127);
-  }
-  int status = 0;
-  if (pid < 0 || waitpid(pid, &status, 0) < 0) return kExitInternal;
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return kExitOk;
-  std::fprintf(stderr, "tehl dynamics: the plot script failed\n");
-  return kExitInternal;
+  return RunPythonScript("tehl dynamics", "plot_dynamics.py", {csv, "-o", png, "--labels", title});
 }
 
 void Report(std::ostream& o,

@@ -8,6 +8,7 @@ list(APPEND TEHL_CLI_SOURCES
   src/cli/lubricant_command.cpp
   src/cli/gear_command.cpp
   src/cli/plot_command.cpp
+  src/cli/python_script.cpp
   src/cli/sweep_command.cpp
   src/cli/sweep_mpi.cpp
   src/cli/train_command.cpp

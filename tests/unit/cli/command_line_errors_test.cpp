@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -72,6 +73,20 @@ TEST(CommandLineErrors, AResultFileThatCannotBeWrittenIsBadInput) {
   const testing::RunResult r = RunDiscInto(dir);
   fs::remove_all(dir);
   ExpectCannotWrite(r, blocked);
+}
+
+// A plot needs a Python with matplotlib and h5py: one that cannot be started is named with
+// what is needed (exit 2, the environment's fault), never "internal error".
+TEST(CommandLineErrors, APythonThatCannotStartIsNamedWithWhatThePlotNeeds) {
+  const std::string result = testing::UniqueTempPath("any_result.h5");
+  std::ofstream(result) << "not read";
+  setenv("TEHL_PYTHON", "/nonexistent/python3", 1);
+  const testing::RunResult r = testing::RunTehl("plot '" + result + "'");
+  unsetenv("TEHL_PYTHON");
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("cannot start /nonexistent/python3"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("matplotlib and h5py"), std::string::npos) << r.err;
 }
 
 TEST(CommandLineErrors, AFolderGivenAsTheCaseFileIsNamedAsAFolder) {
