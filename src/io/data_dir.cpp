@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <fstream>
 
 namespace tehl::internal {
 namespace fs = std::filesystem;
@@ -37,12 +38,17 @@ std::vector<fs::path> DataDirs(const std::string& sub, const char* env_var) {
     std::error_code ec;
     installed = installed || fs::is_directory(candidates.back(), ec);
   }
-  if (!installed && sub == "lubricants") {
-    candidates.emplace_back(TEHL_SOURCE_LUBRICANT_DIR);
-    candidates.emplace_back(TEHL_INSTALL_LUBRICANT_DIR);
-  } else if (!installed && sub == "scripts") {
-    candidates.emplace_back(TEHL_SOURCE_SCRIPT_DIR);
-    candidates.emplace_back(TEHL_INSTALL_SCRIPT_DIR);
+  if (!installed) {
+    // A build tree: its tehl-source-dir.txt (CMakeLists.txt) names the source tree.
+    for (const fs::path& file : {LibraryFile(), ProgramFile()}) {
+      if (file.empty()) continue;
+      std::ifstream marker(file.parent_path() / "tehl-source-dir.txt");
+      std::string source;
+      if (marker && std::getline(marker, source) && !source.empty())
+        candidates.push_back(fs::path(source) / sub);
+    }
+    if (sub == "lubricants") candidates.emplace_back(TEHL_INSTALL_LUBRICANT_DIR);
+    if (sub == "scripts") candidates.emplace_back(TEHL_INSTALL_SCRIPT_DIR);
   }
   std::vector<fs::path> dirs;
   for (const fs::path& c : candidates) {

@@ -12,7 +12,8 @@ namespace tehl::internal {
 // Existing folders for `sub` ("lubricants" or "scripts"), without repeats: first `env_var`
 // (when set), then share/tehl/<sub> relative to the library file and to the running program
 // (<dir>/../share/tehl/<sub>); only when neither exists (a build tree), the folder of the
-// source tree tehl was built from, then the install prefix it was configured with.
+// source tree named by tehl-source-dir.txt beside the library or program (written by CMake
+// into the build tree, never installed), then the install prefix it was configured with.
 std::vector<std::filesystem::path> DataDirs(const std::string& sub, const char* env_var);
 
 }  // namespace tehl::internal
