@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "scene/automatic_grid.hpp"
+#include "scene/case_inputs.hpp"
 #include "scene/case_reader.hpp"
 #include "scene/dynamic_load.hpp"
 #include "scene/film_case.hpp"
@@ -317,7 +318,10 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   };
 
   // Resume from a checkpoint of the same case (docs/results.md, "Checkpoints and --resume").
-  const std::uint64_t fingerprint = internal::CaseFingerprint(doc.ToToml());
+  // The case as run, and the lubricant and profile files it read: a checkpoint of the same
+  // case with an edited oil is another run.
+  const std::uint64_t fingerprint =
+      internal::CaseFingerprint(doc.ToToml() + internal::ReferencedInputsText(doc));
   size_t first = 1;
   double elapsed_before = 0;
   std::optional<internal::CheckpointWriter> checkpoints;

@@ -12,6 +12,7 @@
 #include <system_error>
 #include <thread>
 
+#include "scene/case_inputs.hpp"
 #include "scene/mesh_cycle_checkpoint.hpp"
 #include "tehl/scene/contact_scene.hpp"
 #include "tehl/scene/mesh_cycle_scene.hpp"
@@ -22,12 +23,11 @@ namespace {
 
 // The fingerprint of a scene's case file, kept beside its result as RESULT.case: --resume
 // reuses a result only when the scene it was made from is the scene asked for (a folder of
-// another study, or of an edited one, holds results of other scenes under the same names).
+// another study, or of an edited one, holds results of other scenes under the same names,
+// and an edited lubricant file changes every scene that reads it).
+// The lubricant file and measured profiles the scene reads are part of it.
 std::string SceneFingerprint(const StudyScene& scene) {
-  std::ifstream in(scene.case_path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return std::to_string(internal::CaseFingerprint(text.str()));
+  return std::to_string(internal::CaseFingerprint(internal::CaseWithInputsText(scene.case_path)));
 }
 
 std::string FingerprintPath(const std::string& result) { return result + ".case"; }

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -272,6 +273,50 @@ TEST(StudyIndex, DiscSweepIndexCarriesTemperatureFrictionAndWallTime) {
         EXPECT_EQ(second[k][j], first[k][j]) << "row " << k << " column " << head[j];
       }
   }
+}
+
+// A study whose oil is a file beside its base case: editing that file (here its viscosity,
+// 0.114 -> 0.3 Pa s) changes every scene, so --resume reruns them instead of reading back the
+// films of the old oil (the isoviscous disc's film grows with eta0^0.7 or so: thicker).
+TEST(StudyIndex, ResumeRerunsScenesWhoseLubricantFileChanged) {
+  const std::string dir = testing::UniqueTempPath("edited_oil_study"), out = dir + "/out";
+  fs::create_directories(dir);
+  std::ifstream sae40(std::string(TEHL_SOURCE_DIR) + "/lubricants/sae40.toml");
+  std::ostringstream oil;
+  oil << sae40.rdbuf();
+  std::ofstream(dir + "/mylub.toml") << oil.str();
+  const testing::RunResult r =
+      Sweep(dir,
+            "[contact]\nradius_1_m = 0.02\nradius_2_m = 0.02\nspeed_1_m_s = 1.0\n"
+            "speed_2_m_s = 1.0\nload_n_per_m = 1.0e5\n[lubricant]\nname = \"mylub\"\n"
+            "[numerics]\ngrid_points = 129\n",
+            "contact.load_n_per_m", "[1e5, 2e5]");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto before = ReadCsvCells(out + "/index.csv");
+  ASSERT_EQ(before.size(), 3u);
+  const size_t ih = Column(before[0], "h_min_min_m"), ic = Column(before[0], "computed");
+  // Unchanged: read back.
+  testing::RunResult again =
+      testing::RunTehl("sweep --resume -j 2 -q -o '" + out + "' '" + dir + "/study.toml'");
+  ASSERT_EQ(again.exit_code, 0) << again.out << again.err;
+  const auto reread = ReadCsvCells(out + "/index.csv");
+  ASSERT_EQ(reread.size(), 3u);
+  for (size_t k = 1; k < reread.size(); ++k) EXPECT_EQ(reread[k][ic], "0") << k;
+  const std::string text = oil.str();
+  const size_t v = text.find("viscosity_pa_s = ");
+  ASSERT_NE(v, std::string::npos);
+  const size_t end = text.find('\n', v);
+  std::ofstream(dir + "/mylub.toml")
+      << text.substr(0, v) + "viscosity_pa_s = 0.3" + text.substr(end);
+  again = testing::RunTehl("sweep --resume -j 2 -q -o '" + out + "' '" + dir + "/study.toml'");
+  ASSERT_EQ(again.exit_code, 0) << again.out << again.err;
+  const auto after = ReadCsvCells(out + "/index.csv");
+  ASSERT_EQ(after.size(), 3u);
+  for (size_t k = 1; k < after.size(); ++k) {
+    EXPECT_EQ(after[k][ic], "1") << k;
+    EXPECT_GT(std::stod(after[k][ih]), 1.5 * std::stod(before[k][ih])) << k;
+  }
+  fs::remove_all(dir);
 }
 
 }  // namespace
