@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "tehl/ehl/flash_temperature.hpp"
 #include "tehl/ehl/hertz_edge.hpp"
 #include "tehl/ehl/inlet_truncation.hpp"
 #include "tehl/ehl/outlet_spike.hpp"
@@ -62,14 +63,11 @@ void NoteCycleInlet(const MeshCycleResult& r);
 // `format` with k and value, e.g. Where("step %zu (s = %.4g mm)", 70, 4.913).
 std::string Where(const char* format, size_t k, double value);
 
-// A full film carries as shear stress at most about a tenth of its pressure: the limiting
-// shear stress of lubricants grows as tau_L0 + Lambda p with Lambda of about 0.1 or less (the
-// form of the lubricant files' [eyring] section; Bair & Winer 1979), so EHL traction
-// coefficients stay near or below 0.1. A Newtonian film
-// has no such bound, and at gear pressures its viscosity makes mu grow without limit (the
-// isothermal seed 004 cycle: 0.52 at A; 20 times its load: above 1e6). Above twice the bound
-// a run notes that mu, and the flash temperature from it, are not physical [-].
-inline constexpr double kNewtonianFrictionNote = 0.2;
+// kPhysicalFrictionLimit (tehl/ehl/flash_temperature.hpp): a Newtonian film has no bound on
+// its shear stress, and at gear pressures its viscosity makes mu grow without limit (the
+// isothermal seed 004 cycle: 0.52 at A; 20 times its load: above 1e6). Above the limit a run
+// notes that mu, and the flash temperature from it, are not physical [-].
+inline constexpr double kNewtonianFrictionNote = kPhysicalFrictionLimit;
 
 void PrintNewtonianFrictionNote(size_t count, size_t films, double mu, const std::string& where);
 

@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/sweep_mpi.hpp"
 #include "scene/automatic_grid.hpp"
+#include "tehl/ehl/flash_temperature.hpp"
 #include "tehl/ehl/hertz_edge.hpp"
 #include "tehl/error.hpp"
 #include "tehl/scene/study.hpp"
@@ -141,7 +142,7 @@ int RunSweep(const SweepArgs& a) {
   const std::vector<SceneRow> gathered = SceneRowsFromText(all);
   const auto paths = WriteStudyIndex(study, gathered);
   int ok = 0, not_converged = 0, failed = 0, resumed = 0, restarted = 0, unresolved_edge = 0,
-      short_inlet = 0;
+      short_inlet = 0, unphysical_mu = 0;
   double fewest_nodes = 0, most_nodes = 0;  // over the scenes whose result has a grid
   for (const auto& r : gathered) {
     if (r.grid_points > 0) {
@@ -152,6 +153,7 @@ int RunSweep(const SweepArgs& a) {
     restarted += r.steady_restarts > 0;
     unresolved_edge += r.edge_cells_min >= 0 && r.edge_cells_min < kEdgeResolvedCells;
     short_inlet += r.inlet_deficit_max > internal::kInletNoteDeficit;
+    unphysical_mu += r.unphysical_mu_films > 0;
     not_converged += r.status == "not_converged";
     failed += r.status.rfind("failed", 0) == 0;
     resumed += !r.computed;
@@ -176,6 +178,14 @@ int RunSweep(const SweepArgs& a) {
         "grid_points raised in proportion, or the automatic grid) removes it (docs/results.md, "
         "\"The inlet note\")\n",
         short_inlet, 100 * internal::kInletNoteDeficit);
+  if (unphysical_mu > 0)
+    std::printf(
+        "note: %d scene(s) have Newtonian films whose friction coefficient exceeds %.1f (index "
+        "column unphysical_mu_films): a full film carries at most about 0.1 of its pressure "
+        "as shear stress, so that mu and a flash temperature from it are not physical (their "
+        "flash rises are left out of dT_flash_blok_max_k); [effects] non_newtonian = true "
+        "bounds the shear stress (docs/results.md, \"The friction note\")\n",
+        unphysical_mu, kPhysicalFrictionLimit);
   if (most_nodes > fewest_nodes)
     std::printf(
         "note: the scenes ran on grids of %.0f to %.0f nodes (index column grid_points; the "

@@ -11,6 +11,8 @@
 
 #include "base/number_text.hpp"
 #include "io/hdf5_lock.hpp"
+#include "scene/case_reader.hpp"
+#include "tehl/ehl/flash_temperature.hpp"
 #include "tehl/scene/study_index.hpp"
 
 namespace tehl {
@@ -154,42 +156,76 @@ double ProfileRows(const std::string& steps_path) {
   return std::max(rows, 0.0);
 }
 
-SceneRow GearRow(const std::string& path) {
+// The values of the usable steps (`usable` empty: every step).
+std::vector<double> Kept(const std::vector<double>& v, const std::vector<char>& usable) {
+  if (usable.empty()) return v;
+  std::vector<double> out;
+  for (size_t k = 0; k < v.size() && k < usable.size(); ++k)
+    if (usable[k]) out.push_back(v[k]);
+  return out;
+}
+
+// Blok's flash rises of the usable steps, without those of a Newtonian film whose mu is not
+// physical (kPhysicalFrictionLimit); `unphysical` counts those films.
+std::vector<double> PhysicalFlash(const std::vector<double>& flash,
+                                  const std::vector<double>& mu,
+                                  bool newtonian,
+                                  double* unphysical) {
+  std::vector<double> out;
+  for (size_t k = 0; k < flash.size(); ++k) {
+    if (newtonian && k < mu.size() && mu[k] > kPhysicalFrictionLimit) {
+      *unphysical += 1;
+      continue;
+    }
+    out.push_back(flash[k]);
+  }
+  return out;
+}
+
+SceneRow GearRow(const std::string& path, bool newtonian) {
   const Hdf5Reader h5(path);
   SceneRow r;
-  const auto s = h5.Doubles("/cycle/s");
-  const auto h_min = h5.Doubles("/cycle/h_min");
-  const auto h_c = h5.Doubles("/cycle/h_c");
-  r.steps = static_cast<int>(s.size());
+  // A run that stopped keeps its failed film as the last row: the summaries are over the
+  // converged films only (a steady restart's termination is its steady film's).
+  std::vector<char> usable;
+  if (h5.Exists("/solver/termination"))
+    for (const std::string& t : h5.Strings("/solver/termination"))
+      usable.push_back(t == "converged");
+  const auto s = Kept(h5.Doubles("/cycle/s"), usable);
+  const auto h_min = Kept(h5.Doubles("/cycle/h_min"), usable);
+  const auto h_c = Kept(h5.Doubles("/cycle/h_c"), usable);
+  r.steps = static_cast<int>(h5.Doubles("/cycle/s").size());
   r.h_min_min_m = Min(h_min);
   r.h_c_min_m = Min(h_c);
-  r.p_max_max_pa = Max(h5.Doubles("/cycle/p_max"));
+  r.p_max_max_pa = Max(Kept(h5.Doubles("/cycle/p_max"), usable));
   // The pitch point: the step nearest s_C (MeshCycleResult::PitchStep()).
   const double s_c = h5.DoubleAttribute("/cycle", "s_C");
   size_t pitch = 0;
   for (size_t i = 1; i < s.size(); ++i)
     if (std::abs(s[i] - s_c) < std::abs(s[pitch] - s_c)) pitch = i;
   r.h_c_pitch_m = h_c.empty() ? 0.0 : h_c[pitch];
-  if (h5.Exists("/cycle/T_max")) r.t_max_max_k = Max(h5.Doubles("/cycle/T_max"));
+  if (h5.Exists("/cycle/T_max")) r.t_max_max_k = Max(Kept(h5.Doubles("/cycle/T_max"), usable));
+  std::vector<double> mu;
   if (h5.Exists("/cycle/mu")) {
-    const auto mu = h5.Doubles("/cycle/mu");
+    mu = Kept(h5.Doubles("/cycle/mu"), usable);
     r.mu_mean = Mean(mu);
     r.mu_max = Max(mu);
   }
   if (h5.Exists("/cycle/T1_max") && h5.Exists("/cycle/T2_max"))
-    r.t_surface_max_k =
-        std::max(Max(h5.Doubles("/cycle/T1_max")), Max(h5.Doubles("/cycle/T2_max")));
+    r.t_surface_max_k = std::max(Max(Kept(h5.Doubles("/cycle/T1_max"), usable)),
+                                 Max(Kept(h5.Doubles("/cycle/T2_max"), usable)));
   if (h5.Exists("/cycle/dT_flash_blok"))
-    r.flash_blok_max_k = Max(h5.Doubles("/cycle/dT_flash_blok"));
+    r.flash_blok_max_k = Max(PhysicalFlash(Kept(h5.Doubles("/cycle/dT_flash_blok"), usable), mu,
+                                           newtonian, &r.unphysical_mu_films));
   r.wall_time_s = h5.DoubleAttribute("/", "wall_time");
   if (h5.Exists("/solver/steady_restart"))  // files of earlier versions have none
     for (double v : h5.Doubles("/solver/steady_restart")) r.steady_restarts += v;
   if (h5.Exists("/cycle/edge_cells"))
-    r.edge_cells_min = FewestEdgeCells(h5.Doubles("/cycle/edge_cells"));
+    r.edge_cells_min = FewestEdgeCells(Kept(h5.Doubles("/cycle/edge_cells"), usable));
   if (h5.Exists("/profiles/x"))
     r.grid_points = static_cast<double>(h5.Doubles("/profiles/x").size());
   if (h5.Exists("/cycle/inlet_deficit"))
-    r.inlet_deficit_max = LargestDeficit(h5.Doubles("/cycle/inlet_deficit"));
+    r.inlet_deficit_max = LargestDeficit(Kept(h5.Doubles("/cycle/inlet_deficit"), usable));
   const bool ok = h5.StringAttribute("/", "converged") == "true";
   r.status = ok ? "ok" : "not_converged";
   if (!ok) {
@@ -213,7 +249,7 @@ std::vector<std::string> SplitCsv(const std::string& line) {
 // The _steps.csv of a [contact] run. t_max_k, mu and wall_time_s are read when the file has
 // them (files of earlier versions do not: those summaries stay 0, as for a gear result without
 // /cycle/T_max); the wall time is the sum over the steps.
-SceneRow ContactRow(const std::string& path) {
+SceneRow ContactRow(const std::string& path, bool newtonian) {
   std::ifstream in(path);
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error("cannot read " + path);
@@ -242,23 +278,24 @@ SceneRow ContactRow(const std::string& path) {
     const auto num = [&](const std::string& cell) {
       return internal::ParseRealOrThrow(cell, path);
     };
+    ++r.steps;
+    if (iwt != none) r.wall_time_s += num(f[iwt]);
+    if (irs != none) r.steady_restarts += num(f[irs]);
+    if (f[it] != "converged") {  // a failed film is no result: summaries over the others
+      r.status = "not_converged";
+      r.message = f[it];
+      continue;
+    }
     h_min.push_back(num(f[ih]));
     h_c.push_back(num(f[ic]));
     p_max.push_back(num(f[ip]));
     if (itm != none) t_max.push_back(num(f[itm]));
     if (imu != none) mu.push_back(num(f[imu]));
-    if (iwt != none) r.wall_time_s += num(f[iwt]);
     if (it1 != none && it2 != none) surface.push_back(std::max(num(f[it1]), num(f[it2])));
     if (ifl != none) flash.push_back(num(f[ifl]));
-    if (irs != none) r.steady_restarts += num(f[irs]);
     if (ied != none) edge.push_back(num(f[ied]));
     if (iin != none) inlet.push_back(num(f[iin]));
-    if (f[it] != "converged") {
-      r.status = "not_converged";
-      r.message = f[it];
-    }
   }
-  r.steps = static_cast<int>(h_min.size());
   r.h_min_min_m = Min(h_min);
   r.h_c_min_m = Min(h_c);
   r.h_c_pitch_m = h_c.empty() ? 0.0 : h_c.back();
@@ -267,7 +304,7 @@ SceneRow ContactRow(const std::string& path) {
   r.mu_mean = Mean(mu);
   r.mu_max = Max(mu);
   r.t_surface_max_k = Max(surface);
-  r.flash_blok_max_k = Max(flash);
+  r.flash_blok_max_k = Max(PhysicalFlash(flash, mu, newtonian, &r.unphysical_mu_films));
   r.edge_cells_min = FewestEdgeCells(edge);
   r.inlet_deficit_max = LargestDeficit(inlet);
   r.grid_points = ProfileRows(path);
@@ -278,7 +315,10 @@ SceneRow ContactRow(const std::string& path) {
 
 SceneRow ReadSceneRow(const Study& study, const StudyScene& scene) {
   const std::string path = study.ResultPath(scene);
-  SceneRow r = study.gear ? GearRow(path) : ContactRow(path);
+  // Whether the scene's film is Newtonian, for the friction it may report.
+  const internal::Document doc = internal::ReadCaseDocument(scene.case_path);
+  const bool newtonian = !doc.Bool("effects", "non_newtonian");
+  SceneRow r = study.gear ? GearRow(path, newtonian) : ContactRow(path, newtonian);
   r.scene = scene.id;
   r.result_path = path;
   return r;

@@ -65,6 +65,11 @@ const std::vector<SummaryColumn>& SummaryColumns() {
        "largest estimated film deficit of the truncated inlet over the films; above 0.005 the "
        "inlet thins them (-1: no estimate, or results of earlier versions)",
        &SceneRow::inlet_deficit_max},
+      {"unphysical_mu_films", "unphysical_mu_films", "-",
+       "converged Newtonian films whose friction coefficient exceeds 0.2, which a full film "
+       "cannot carry; their flash temperatures are left out of dT_flash_blok_max_k "
+       "([effects] non_newtonian = true bounds the friction)",
+       &SceneRow::unphysical_mu_films},
   };
   return cols;
 }
@@ -90,6 +95,15 @@ std::string PlainValue(const std::string& literal) {
       literal.find('\\') == std::string::npos && literal.find(literal[0], 1) == n - 1)
     return literal.substr(1, n - 2);
   return literal;
+}
+
+// Paths in the index are absolute, so that a script opening it from any folder finds the
+// files ("" stays "": a scene that failed has no result).
+std::string Absolute(const std::string& path) {
+  if (path.empty()) return path;
+  std::error_code ec;
+  const std::filesystem::path p = std::filesystem::absolute(path, ec);
+  return ec ? path : p.lexically_normal().string();
 }
 
 std::string Num(double x) {
@@ -178,13 +192,13 @@ std::vector<std::string> WriteStudyIndex(const Study& study, std::vector<SceneRo
     steps.push_back(r.steps);
     status.push_back(r.status);
     message.push_back(r.message);
-    result.push_back(r.result_path);
+    result.push_back(Absolute(r.result_path));
   }
   {
     Hdf5Writer h5(h5_path);
     h5.SetAttribute("/", "program", "tehl 0.1.0");
-    h5.SetAttribute("/", "study_file", study.path);
-    h5.SetAttribute("/", "base_case", study.base_case_path);
+    h5.SetAttribute("/", "study_file", Absolute(study.path));
+    h5.SetAttribute("/", "base_case", Absolute(study.base_case_path));
     h5.SetAttribute("/", "mode", study.mode);
     h5.SetAttribute("/", "name", study.name);
     h5.SetAttribute("/", "kind", study.gear ? "mesh_cycle" : "contact");
@@ -229,7 +243,7 @@ std::vector<std::string> WriteStudyIndex(const Study& study, std::vector<SceneRo
                  PlainValue(study.parameters[i].values_toml[study.scenes[r.scene].value_index[i]]));
     for (const SummaryColumn& c : SummaryColumns()) csv << ',' << Num(r.*c.field);
     csv << ',' << r.steps << ',' << CsvText(r.status) << ',' << (r.computed ? 1 : 0) << ','
-        << CsvText(r.result_path) << '\n';
+        << CsvText(Absolute(r.result_path)) << '\n';
   }
   internal::WriteTextAtomically(csv_path, csv.str());
   return {h5_path, csv_path};

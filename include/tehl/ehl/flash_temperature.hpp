@@ -31,6 +31,12 @@ namespace tehl {
 // sin^2(phi), which makes the integrand smooth, maximized by golden section; 1e-9 relative).
 inline constexpr double kBlokFactor = 0.7859833957;
 
+// A full film carries as shear stress at most about a tenth of its pressure (the limiting
+// shear stress of lubricants, tau_L0 + Lambda p with Lambda of about 0.1 or less; Bair & Winer
+// 1979): a Newtonian film's mu above twice that, and a flash temperature from it, are not
+// physical (docs/results.md, "The friction note") [-].
+inline constexpr double kPhysicalFrictionLimit = 0.2;
+
 struct FlashTemperatureInputs {
   double friction_coefficient = 0;  // mu [-]; >= 0
   double load_n_per_m = 0;          // w [N/m]; >= 0

@@ -18,6 +18,8 @@ struct SceneRow {
   std::string message;            // solver message of the last step ("" when ok)
   std::string result_path;        // the scene's result file ("" when it failed)
   bool computed = true;           // false: rebuilt from an existing result (--resume)
+  // The summaries below are over the converged films (a scene that stopped keeps its failed
+  // film as its last row; with none converged they stay 0).
   double h_min_min_m = 0;         // min over the cycle of h_min [m]
   double h_c_pitch_m = 0;         // h_c at the step nearest the pitch point C [m]
                                   //   (contact cases: at the last step)
@@ -41,7 +43,10 @@ struct SceneRow {
   double inlet_deficit_max = -1;  // largest estimated film deficit of the truncated inlet
                                   //   over the films (docs/results.md "The inlet note"); -1:
                                   //   no estimate, or a result of an earlier version [-]
-  int steps = 0;                  // rows of the cycle table [-]
+  double unphysical_mu_films = 0;  // converged Newtonian films whose mu exceeds
+                                   //   kPhysicalFrictionLimit (flash_temperature.hpp): their
+                                   //   flash rises are left out of flash_blok_max_k [-]
+  int steps = 0;                   // rows of the cycle table, failed films included [-]
 };
 
 // The row of a finished scene, read from its result file (HDF5 /cycle of a mesh cycle, or the

@@ -120,10 +120,9 @@ TEST(StudyIndex, ContactStepsKeepTheFewestEdgeCells) {
   EXPECT_EQ(back[0].edge_cells_min, 7.25);
 }
 
-// The new columns: T_max the largest, mu mean and max, wall time the sum over the steps.
-// Expected values by hand from the three rows: max(320, 335, 330) = 335 K;
-// mu (0.01 + 0.04 + 0.03)/3 = 0.08/3, max 0.04; wall 0.5 + 0.25 + 0.125 = 0.875 s (exact in
-// binary).
+// The new columns: T_max the largest, mu mean and max over the converged films, wall time the
+// sum over all steps. Expected values by hand from the rows: max(320, 335) = 335 K; mu
+// (0.01 + 0.04)/2 = 0.025, max 0.04; wall 0.5 + 0.25 + 0.125 = 0.875 s (exact in binary).
 TEST(StudyIndex, ContactStepsWithTheNewColumnsAreSummarized) {
   StudyScene scene;
   const Study s = OneSceneStudy(
@@ -138,10 +137,32 @@ TEST(StudyIndex, ContactStepsWithTheNewColumnsAreSummarized) {
   EXPECT_EQ(r.status, "not_converged");
   EXPECT_EQ(r.message, "coupling_not_converged");
   EXPECT_EQ(r.steps, 3);
+  // The summaries are over the two converged films; the failed third is no result (its
+  // thinner film, 2.8e-7 m, is not the scene's). The wall time counts every step.
+  EXPECT_EQ(r.h_min_min_m, 2.9e-7);
+  EXPECT_EQ(r.h_c_pitch_m, 3.9e-7);
+  EXPECT_EQ(r.p_max_max_pa, 6.1e8);
   EXPECT_EQ(r.t_max_max_k, 335.0);
-  EXPECT_NEAR(r.mu_mean, 0.08 / 3, 1e-15);
+  EXPECT_NEAR(r.mu_mean, 0.05 / 2, 1e-15);
   EXPECT_EQ(r.mu_max, 0.04);
   EXPECT_EQ(r.wall_time_s, 0.875);
+}
+
+// A Newtonian film's mu above 0.2 (kPhysicalFrictionLimit) is not physical: the flash rise
+// from it is left out of the scene's maximum and the film is counted (a sweep note names it).
+TEST(StudyIndex, UnphysicalNewtonianFrictionIsCountedAndItsFlashLeftOut) {
+  StudyScene scene;
+  const Study s = OneSceneStudy(
+      "unphysical_mu",
+      "t_s,w_n_per_m,u1_m_s,u2_m_s,h_min_m,h_c_m,p_max_pa,t_max_k,mu,wall_time_s,"
+      "newton_iterations,coupling_iterations,t1_max_k,t2_max_k,dT_flash_blok_k,termination\n"
+      "0.0,1e5,1.2,0.8,3.0e-7,4.0e-7,6.0e8,320,0.05,0.5,12,8,320,320,12.5,converged\n"
+      "1e-4,1e5,1.2,0.8,2.9e-7,3.9e-7,6.1e8,335,0.45,0.25,5,4,320,320,120.0,converged\n",
+      &scene);
+  const SceneRow r = ReadSceneRow(s, scene);
+  EXPECT_EQ(r.mu_max, 0.45);  // the model's answer stays in the index
+  EXPECT_EQ(r.flash_blok_max_k, 12.5);
+  EXPECT_EQ(r.unphysical_mu_films, 1.0);
 }
 
 using testing::ReadCsvCells;
