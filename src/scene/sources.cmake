@@ -3,6 +3,7 @@ list(APPEND TEHL_SOURCES
   src/scene/case_schema.cpp
   src/scene/case_reader.cpp
   src/scene/case_inputs.cpp
+  src/scene/case_plan.cpp
   src/scene/film_case.cpp
   src/scene/automatic_grid.cpp
   src/scene/contact_case.cpp

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "io/atomic_file.hpp"
+#include "scene/case_plan.hpp"
 #include "scene/case_reader.hpp"
 #include "scene/film_case.hpp"
 #include "scene/gear_case.hpp"
@@ -97,10 +98,7 @@ std::vector<InputProblem> CheckScene(const std::string& text, const std::string&
           std::error_code(errno != 0 ? errno : EIO, std::generic_category()));
   }
   Document doc = internal::ReadCaseDocument(tmp_path);
-  if (doc.problems().empty()) {
-    if (doc.HasSection("gear")) internal::ReadGearCase(doc);
-    internal::ReadFilmCase(doc);
-  }
+  internal::CheckCasePlan(doc);  // the plan's rules too (steps, grid, memory), as a run
   return doc.problems();
 }
 

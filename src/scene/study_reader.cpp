@@ -93,10 +93,21 @@ class VaryReader {
     }
     p.label = p.key;
     if (const toml::value* label = get("label")) {
-      if (label->is_string() && !label->as_string().str.empty())
-        p.label = label->as_string().str;
+      const std::string text = label->is_string() ? label->as_string().str : std::string();
+      // A label names an index column, an HDF5 dataset and a figure file (study_<label>.png
+      // beside study_path.png and study_path_<q>.png of tehl plot).
+      const bool plain = !text.empty() && text.find_first_not_of(
+                                              "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQ"
+                                              "RSTUVWXYZ0123456789_.-") == std::string::npos;
+      const bool plot_name = text == "path" || text.rfind("path_", 0) == 0;
+      if (plain && !plot_name)
+        p.label = text;
       else
-        Add(LineOf(*label), where + ".label", Show(*label), "must be a non-empty string",
+        Add(LineOf(*label), where + ".label", Show(*label),
+            !label->is_string() || text.empty() ? "must be a non-empty string"
+            : plot_name ? "is the name of the path figures of tehl plot (study_path*.png)"
+                        : "must be letters, digits, _, . and - only (it names a column, "
+                          "an HDF5 dataset and a figure file)",
             "a column name for the index, e.g. label = \"amplitude\"");
     }
     const toml::value* values = get("values");

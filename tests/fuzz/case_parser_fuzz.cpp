@@ -22,14 +22,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <optional>
 #include <string>
 
+#include "scene/case_plan.hpp"
 #include "scene/case_reader.hpp"
-#include "scene/contact_case.hpp"
-#include "scene/film_case.hpp"
-#include "scene/gear_case.hpp"
-#include "scene/mesh_cycle_plan.hpp"
 #include "tehl/error.hpp"
 #include "tehl/lubricant/lubricant.hpp"
 
@@ -63,18 +59,7 @@ void CheckCase(const std::string& path) {
   using namespace tehl::internal;
   try {
     Document doc = ReadCaseDocument(path);
-    if (doc.problems().empty()) {
-      std::optional<GearCase> gear;
-      if (doc.HasSection("gear")) gear = ReadGearCase(doc);
-      const FilmCase film = ReadFilmCase(doc);
-      if (doc.problems().empty() && gear && gear->pair) {
-        const CyclePath cycle(*gear);
-        PlanMeshCycle(doc, cycle, gear->ReducedModulusPa(), film);
-      } else if (doc.problems().empty() && doc.HasSection("contact")) {
-        const ContactInputs in = ReadContact(doc);
-        if (doc.problems().empty()) PlanContactGrid(doc, in, film);
-      }
-    }
+    CheckCasePlan(doc);
     doc.ThrowIfProblems();
   } catch (const tehl::InputError&) {
     // Bad input, reported with file:line: the expected outcome.
