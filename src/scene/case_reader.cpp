@@ -180,6 +180,27 @@ Document ReadCaseDocument(const std::string& path) {
   const bool rough_effect = doc.Bool("effects", "roughness");
   for (const char* s : {"surfaces.surface1", "surfaces.surface2"}) {
     const std::string kind = doc.String(s, "roughness");
+    // The keys of a form the surface does not have would be ignored without a word (a study
+    // varying amplitude_m on a smooth surface ran identical scenes). Their defaults (0, "")
+    // are what a written-out case (a study's scene) carries for every surface.
+    const auto set = [&](const char* k) {
+      if (!doc.Given(s, k)) return false;
+      const std::string key = k;
+      if (key == "profile_file") return !doc.String(s, k).empty();
+      return key == "wavelength_m" || doc.Real(s, k) != 0.0;
+    };
+    const char* const sinusoidal_keys[] = {"amplitude_m", "wavelength_m", "phase_rad"};
+    for (const char* k : sinusoidal_keys)
+      if (set(k) && kind != "sinusoidal")
+        doc.Problem(s, k,
+                    "describes sinusoidal waviness, but the surface's roughness is \"" +
+                        (kind.empty() ? std::string("smooth") : kind) + "\"",
+                    "roughness = \"sinusoidal\" in this section, or leave the key out");
+    if (set("profile_file") && kind != "profile")
+      doc.Problem(s, "profile_file",
+                  "is a measured profile, but the surface's roughness is \"" +
+                      (kind.empty() ? std::string("smooth") : kind) + "\"",
+                  "roughness = \"profile\" in this section, or leave the key out");
     if (kind.empty() || kind == "smooth") continue;
     if (!rough_effect)
       doc.Problem(s, "roughness", "a rough surface needs effects.roughness = true",
