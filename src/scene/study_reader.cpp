@@ -266,12 +266,19 @@ class VaryReader {
           "a range needs a numeric case key", "values = [...] for this key");
       ok = false;
     }
+    if (ok && from == to) {
+      Add(p->values_line, where + ".to", FormatReal(to),
+          "equals from: the range would give " + std::to_string(count) + " identical scenes",
+          "to != from, or values = [" + FormatReal(from) + "] for one scene");
+      ok = false;
+    }
     if (!ok) return false;
     for (long long i = 0; i < count; ++i) {
       const double f = static_cast<double>(i) / static_cast<double>(count - 1);
       double x = log ? std::exp(std::log(from) + f * (std::log(to) - std::log(from)))
                      : from + f * (to - from);
-      if (i == count - 1) x = to;  // the end point exactly as written
+      if (i == 0) x = from;  // both end points exactly as written
+      if (i == count - 1) x = to;
       if (spec.kind == ValueKind::kInt) {
         x = std::round(x);  // integer keys: the nearest integer (docs/studies.md)
         p->values_toml.push_back(std::to_string(static_cast<long long>(x)));

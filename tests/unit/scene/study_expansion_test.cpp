@@ -96,6 +96,19 @@ TEST(StudyExpansion, LinearAndLogarithmicRangesHitBothEnds) {
   EXPECT_DOUBLE_EQ(t[2], 363.0);
 }
 
+// Both ends of a range are the numbers written, bit for bit: exp(log(5e4)) is
+// 50000.00000000001, which a script filtering the index by value would not find.
+TEST(StudyExpansion, RangeEndsAreExactlyAsWritten) {
+  const Study s = ReadStudy(WriteStudy("log_ends.toml",
+                                       "[[vary]]\nkey = \"operating.power_w\"\n"
+                                       "from = 5e4\nto = 2e5\ncount = 3\nlog = true\n"));
+  const std::vector<double>& p = s.parameters[0].values_number;
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_EQ(p.front(), 5e4);
+  EXPECT_EQ(p.back(), 2e5);
+  EXPECT_EQ(s.parameters[0].values_toml.front(), "50000.0");
+}
+
 TEST(StudyExpansion, StringValuesAndLubricantNamesResolveForTheScene) {
   const Study s = ReadStudy(WriteStudy("oils.toml",
                                        "[[vary]]\nkey = \"lubricant.name\"\n"
