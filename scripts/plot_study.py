@@ -74,10 +74,19 @@ def shown_labels(index, labels):
 def read_cycles(results):
     cycles = []
     for row, path in enumerate(results):
-        if not path or not os.path.isfile(path):
+        if not path:
+            continue  # a failed scene: no result file
+        if not os.path.isfile(path):
+            print(f"plot_study.py: warning: scene {row}: its result {path} is missing: no curve",
+                  file=sys.stderr)
             continue
-        with h5py.File(path, "r") as r:
-            cycles.append((row, {k: r["cycle"][k][:] for k in r["cycle"].keys() if k != "zone"}))
+        try:
+            with h5py.File(path, "r") as r:
+                cycles.append((row, {k: r["cycle"][k][:] for k in r["cycle"].keys()
+                                     if k != "zone"}))
+        except (OSError, KeyError) as e:
+            print(f"plot_study.py: warning: scene {row}: {path} is not readable ({e}): no curve",
+                  file=sys.stderr)
     return cycles
 
 
@@ -132,9 +141,12 @@ def main():
         print_table(f, labels, status)
         return
     out = a.output_dir or os.path.dirname(os.path.abspath(a.index))
-    os.makedirs(out, exist_ok=True)
-    # Result paths are absolute or relative to the working directory of the sweep; fall back
-    # to the index's scenes/ folder when the study was moved.
+    try:
+        os.makedirs(out, exist_ok=True)
+    except OSError as e:
+        fail(f"-o/--output-dir {out}: cannot create the folder for the figures ({e.strerror})")
+    # Result paths are absolute (indexes of earlier versions: relative to the working directory
+    # of the sweep); fall back to the index's scenes/ folder when the study was moved.
     base = os.path.dirname(os.path.abspath(a.index))
     results = []
     for x in f["result"][:]:
@@ -151,7 +163,10 @@ def main():
     def save(fig, name):
         path = os.path.join(out, f"{a.prefix}_{name}.png")
         fig.tight_layout()
-        fig.savefig(path, dpi=a.dpi)
+        try:
+            fig.savefig(path, dpi=a.dpi)
+        except OSError as e:
+            fail(f"{path}: cannot write the figure ({e.strerror})")
         plt.close(fig)
         written.append(path)
 
@@ -227,7 +242,7 @@ def main():
             axes[-1, 0].set_xticks(range(len(ticks)), ticks)
         save(fig, lab.replace("/", "_").replace(".", "_"))
     for w in written:
-        print(w)
+        print(f"wrote {w}")
 
 
 if __name__ == "__main__":
