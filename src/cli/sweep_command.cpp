@@ -105,8 +105,9 @@ int RunOnEveryRank(const SweepArgs& a, const SweepMpi& mpi, Study* study, std::s
 }
 
 void PrintDryRun(const SweepArgs& a, const Study& study) {
-  std::printf("%s: %zu scenes (%s of %zu parameters), base %s\n", a.study.c_str(),
-              study.scenes.size(), study.mode.c_str(), study.parameters.size(),
+  std::printf("%s: %zu scene%s (%s of %zu parameter%s), base %s\n", a.study.c_str(),
+              study.scenes.size(), study.scenes.size() == 1 ? "" : "s", study.mode.c_str(),
+              study.parameters.size(), study.parameters.size() == 1 ? "" : "s",
               study.base_case_path.c_str());
   for (const auto& sc : study.scenes) {
     std::printf("%s", sc.case_path.c_str());

@@ -319,6 +319,12 @@ SceneRow ReadSceneRow(const Study& study, const StudyScene& scene) {
   const internal::Document doc = internal::ReadCaseDocument(scene.case_path);
   const bool newtonian = !doc.Bool("effects", "non_newtonian");
   SceneRow r = study.gear ? GearRow(path, newtonian) : ContactRow(path, newtonian);
+  // An isothermal contact run writes the inlet temperature as its T_max and surface
+  // temperatures; the index has no temperature then, as for an isothermal mesh cycle (0).
+  if (!study.gear && doc.problems().empty() && !doc.Bool("effects", "thermal")) {
+    r.t_max_max_k = 0;
+    r.t_surface_max_k = 0;
+  }
   r.scene = scene.id;
   r.result_path = path;
   return r;

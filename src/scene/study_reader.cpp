@@ -358,6 +358,12 @@ StudyFile ReadStudyFile(const std::string& path) {
   }
   f.mode = doc.String("study", "mode");
   f.name = doc.String("study", "name");
+  // The name makes the default output folder results/<name>: one folder name, not a path.
+  if (!f.name.empty() &&
+      (f.name.find_first_of("/\\") != std::string::npos || f.name == "." || f.name == ".."))
+    problems.Add({path, doc.Line("study", "name"), "study.name", FormatValue(Value(f.name)),
+                  "names the study's folder under results/: a path would put it elsewhere",
+                  "a name without / (output = \"DIR\" chooses the folder)"});
   if (f.name.empty()) f.name = fs::path(path).stem().string();
   f.output = doc.String("study", "output");
   if (f.output.empty()) f.output = (fs::path("results") / f.name).string();
