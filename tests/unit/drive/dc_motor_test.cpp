@@ -38,16 +38,23 @@ TEST(DcMotor, PermanentMagnetLineThroughNoLoadSpeedAndStallTorque) {
   EXPECT_NEAR(op.shaft_power_w, 288.0, 1e-7);
 }
 
-// Shunt (3.1.1), (3.1.2): E = 220 V, R_f = 110 Ohm -> I_f = 2 A; K_w = 0.5 V s/(A rad):
-// flux 1 V s/rad; R_a = 0.4 Ohm. At I_a = 50 A: w = (220 - 20)/1 = 200 rad/s, T = 50 N m
-// (lossless K_a = K_w I_f = 1 N m/A). Line current 52 A.
-TEST(DcMotor, ShuntSpeedAndTorqueLaws) {
+// The shunt motor of the tests below: E = 220 V, R_a = 0.4 Ohm, K_w = 0.5 V s/(A rad),
+// R_f = 110 Ohm.
+DcMotorSpec Shunt220() {
   DcMotorSpec s;
   s.type = DcMotorType::kShunt;
   s.supply_voltage_v = 220;
   s.armature_resistance_ohm = 0.4;
   s.speed_constant = 0.5;
   s.field_resistance_ohm = 110;
+  return s;
+}
+
+// Shunt (3.1.1), (3.1.2): E = 220 V, R_f = 110 Ohm -> I_f = 2 A; K_w = 0.5 V s/(A rad):
+// flux 1 V s/rad; R_a = 0.4 Ohm. At I_a = 50 A: w = (220 - 20)/1 = 200 rad/s, T = 50 N m
+// (lossless K_a = K_w I_f = 1 N m/A). Line current 52 A.
+TEST(DcMotor, ShuntSpeedAndTorqueLaws) {
+  DcMotorSpec s = Shunt220();
   const DcMotor m(s);
   EXPECT_DOUBLE_EQ(m.FieldCurrent(), 2.0);
   EXPECT_DOUBLE_EQ(m.SpeedAtCurrent(50.0), 200.0);
@@ -153,12 +160,7 @@ TEST(DcMotor, RejectsMissingFieldAndNonPositiveConstants) {
 // constant above K_w I_f makes more shaft power than the armature takes. Shunt of
 // ShuntSpeedAndTorqueLaws: K_w E / R_f = 0.5 * 220 / 110 = 1 N m/A is the largest K_a.
 TEST(DcMotor, RejectsATorqueConstantAboveTheLosslessValue) {
-  DcMotorSpec s;
-  s.type = DcMotorType::kShunt;
-  s.supply_voltage_v = 220;
-  s.armature_resistance_ohm = 0.4;
-  s.speed_constant = 0.5;
-  s.field_resistance_ohm = 110;
+  DcMotorSpec s = Shunt220();
   s.torque_constant = 1.0;  // exactly lossless: accepted
   EXPECT_NO_THROW(DcMotor{s});
   s.torque_constant = 1.1;

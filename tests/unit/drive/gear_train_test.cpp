@@ -9,32 +9,13 @@
 
 #include "tehl/error.hpp"
 #include "tehl/units.hpp"
+#include "unit/drive/train_spec_builders.hpp"
 
 namespace tehl {
 namespace {
-
-TrainMember Gear(const std::string& name, int z, std::string shaft = "", std::string carrier = "") {
-  TrainMember m;
-  m.name = name;
-  m.teeth = z;
-  m.shaft = std::move(shaft);
-  m.carrier = std::move(carrier);
-  m.where = "gear." + name;
-  return m;
-}
-
-TrainMember Arm(const std::string& name, std::string shaft = "") {
-  TrainMember m;
-  m.name = name;
-  m.kind = MemberKind::kCarrier;
-  m.shaft = std::move(shaft);
-  m.where = "carrier." + name;
-  return m;
-}
-
-TrainMesh Mesh(const std::string& a, const std::string& b, MeshKind k = MeshKind::kExternal) {
-  return {a, b, k, false, "mesh." + a + b};
-}
+using testing::Arm;
+using testing::Gear;
+using testing::Mesh;
 
 double Speed(const GearTrainSpec& s, const TrainSolution& r, const std::string& name) {
   return r.speed.at(s.Index(name));

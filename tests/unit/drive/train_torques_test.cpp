@@ -7,22 +7,13 @@
 
 #include <cmath>
 
+#include "unit/drive/train_spec_builders.hpp"
+
 namespace tehl {
 namespace {
-
-TrainMember Gear(const std::string& name, int z, std::string shaft = "", std::string carrier = "") {
-  TrainMember m;
-  m.name = name;
-  m.teeth = z;
-  m.shaft = std::move(shaft);
-  m.carrier = std::move(carrier);
-  m.where = "gear." + name;
-  return m;
-}
-
-TrainMesh Mesh(const std::string& a, const std::string& b, MeshKind k = MeshKind::kExternal) {
-  return {a, b, k, false, "mesh." + a + b};
-}
+using testing::Arm;
+using testing::Gear;
+using testing::Mesh;
 
 double Torque(const GearTrainSpec& s, const TrainTorques& t, const std::string& name) {
   return t.torque.at(s.Index(name)).value();
