@@ -83,6 +83,9 @@ struct FilmState {
   // Hertz similarity when the contact's outlet moves by more than a grid cell.
   std::optional<ContactConditions> solved_for;
   bool valid() const { return p_pa.size() > 0 && p_pa.size() == h_m.size(); }
+  // The film's scalars. They describe a state with a film: on one that is not valid() (never
+  // solved) they return 0, which is no film thickness; check valid() first. (The solver's
+  // diagnostics below return NaN, or an empty vector, for such a state instead.)
   double MinFilm() const;  // h_min, parabola through the smallest node (that node if the
                            // parabola dips below zero between positive nodes) [m]
   double CentralFilm(const UniformGrid& g) const;  // h at x = 0 (interpolated) [m]
@@ -286,7 +289,8 @@ class LineContactSolver {
 
   // Diagnostics: the scaled steady residual max-norm of a state under conditions c, and
   // the mass flow per unit width q = rho h um - rho h^3/(12 eta) dp/dx between nodes i and
-  // i+1 (size n-1) [kg/(m s)]; constant along x for a converged steady film.
+  // i+1 (size n-1) [kg/(m s)]; constant along x for a converged steady film. A state that is
+  // not of this grid gives NaN and an empty vector.
   double ResidualNorm(const ContactConditions& c, const FilmState& state) const;
   Eigen::VectorXd MassFlow(const ContactConditions& c, const FilmState& state) const;
 
