@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/number_format.hpp"
 #include "io/atomic_file.hpp"
 #include "scene/case_reader.hpp"
 #include "scene/film_case.hpp"
@@ -26,12 +27,6 @@
 
 namespace tehl::cli {
 namespace {
-
-std::string Fmt(const char* format, double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, x);
-  return buf;
-}
 
 // One line "label  pinion  wheel".
 // Why a stiffness method does not apply: every rule it breaks, with the value and the range.

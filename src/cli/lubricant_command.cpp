@@ -13,6 +13,7 @@
 
 #include "base/schema.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_format.hpp"
 #include "io/atomic_file.hpp"
 #include "lubricant/lubricant_schema.hpp"
 #include "scene/case_reader.hpp"
@@ -78,12 +79,6 @@ Range ParseRange(const std::string& option,
   return r;
 }
 
-std::string Fixed(const char* fmt, double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, x);
-  return buf;
-}
-
 }  // namespace
 
 Command AddLubricantCommand(CLI::App& app) {
@@ -125,7 +120,7 @@ Command AddLubricantCommand(CLI::App& app) {
                                    "e.g. --p 0:1e9:11",
                                    &problems);
         const std::string t_text =
-            args->T.empty() ? Fixed("%.10g", t0) + ":" + Fixed("%.10g", t0 + 80) + ":5" : args->T;
+            args->T.empty() ? Fmt("%.10g", t0) + ":" + Fmt("%.10g", t0 + 80) + ":5" : args->T;
         const Range T = ParseRange("--T", t_text, 200.0, 1000.0,
                                    "start:stop:count with absolute temperatures in "
                                    "[200, 1000] K, e.g. --T 313:393:5",

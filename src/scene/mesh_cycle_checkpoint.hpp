@@ -82,4 +82,27 @@ class CheckpointWriter {
 std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path,
                                                   std::string* problem = nullptr);
 
+// Where a resumed run starts: the first step to solve (1: the steady film at the start of
+// the cycle comes first) and the wall time spent before [s].
+struct ResumePoint {
+  size_t first_step = 1;
+  double elapsed_s = 0;
+  int resumed_from_step = 0;  // 0: not resumed
+};
+
+// Continues `r` (rows and profiles), `state` and `solver`'s time history, and `writer`'s
+// journal, from the checkpoint at `path` when it is of this run: the same `fingerprint`, a
+// next step inside the plan of `films` films (steps + 1), and a film of `grid_nodes` nodes.
+// Otherwise leaves them and says on stderr why no checkpoint is used (a damaged or unusable
+// one always; a missing one unless `quiet`).
+ResumePoint ResumeFromCheckpoint(const std::string& path,
+                                 std::uint64_t fingerprint,
+                                 size_t films,
+                                 int grid_nodes,
+                                 bool quiet,
+                                 CheckpointWriter* writer,
+                                 MeshCycleResult* r,
+                                 FilmState* state,
+                                 LineContactSolver* solver);
+
 }  // namespace tehl::internal

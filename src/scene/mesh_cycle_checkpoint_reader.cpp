@@ -1,6 +1,7 @@
 // Reading a mesh-cycle checkpoint and its journal, refusing any that cannot be trusted
 // (mesh_cycle_checkpoint.hpp).
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -175,6 +176,45 @@ std::optional<MeshCycleCheckpoint> ReadCheckpoint(const std::string& path, std::
     if (problem) *problem = e.what();
     return std::nullopt;
   }
+}
+
+ResumePoint ResumeFromCheckpoint(const std::string& path,
+                                 std::uint64_t fingerprint,
+                                 size_t films,
+                                 int grid_nodes,
+                                 bool quiet,
+                                 CheckpointWriter* writer,
+                                 MeshCycleResult* r,
+                                 FilmState* state,
+                                 LineContactSolver* solver) {
+  ResumePoint at;
+  std::string unusable;  // why a checkpoint that is there cannot be used
+  std::optional<MeshCycleCheckpoint> ck = ReadCheckpoint(path, &unusable);
+  if (ck && ck->fingerprint == fingerprint && ck->next_step >= 1 &&
+      static_cast<size_t>(ck->next_step) < films &&
+      ck->result.steps.size() == static_cast<size_t>(ck->next_step) &&
+      ck->state.p_pa.size() == grid_nodes) {
+    writer->ContinueFrom(*ck);
+    r->steps = std::move(ck->result.steps);
+    for (auto [to, from] : {std::pair{&r->p_pa, &ck->result.p_pa},
+                            {&r->h_m, &ck->result.h_m},
+                            {&r->t_mid_k, &ck->result.t_mid_k},
+                            {&r->t1_k, &ck->result.t1_k},
+                            {&r->t2_k, &ck->result.t2_k},
+                            {&r->t_field_k, &ck->result.t_field_k}})
+      *to = std::move(*from);
+    *state = std::move(ck->state);
+    solver->RestoreTransient(ck->history);
+    at.first_step = static_cast<size_t>(ck->next_step);
+    at.elapsed_s = ck->elapsed_s;
+    at.resumed_from_step = ck->next_step;
+  } else if (!unusable.empty()) {  // printed even when quiet, as a checkpoint not written is
+    std::fprintf(stderr, "warning: the checkpoint %s is not used: %s; starting at A\n",
+                 path.c_str(), unusable.c_str());
+  } else if (!quiet) {
+    std::fprintf(stderr, "no usable checkpoint %s for this case: starting at A\n", path.c_str());
+  }
+  return at;
 }
 
 }  // namespace tehl::internal

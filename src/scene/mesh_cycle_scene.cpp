@@ -328,31 +328,12 @@ MeshCycleResult RunMeshCycle(const std::string& case_path, const MeshCycleRunOpt
   bool checkpoints_off = false;  // a checkpoint could not be written
   if (!checkpoint_path.empty()) checkpoints.emplace(checkpoint_path);
   if (ro.resume && !checkpoint_path.empty()) {
-    std::string unusable;  // why a checkpoint that is there cannot be used
-    std::optional<internal::MeshCycleCheckpoint> ck =
-        internal::ReadCheckpoint(checkpoint_path, &unusable);
-    if (ck && ck->fingerprint == fingerprint && ck->next_step >= 1 &&
-        static_cast<size_t>(ck->next_step) < s_steps.size() &&
-        ck->result.steps.size() == static_cast<size_t>(ck->next_step) &&
-        ck->state.p_pa.size() == grid.size()) {
-      checkpoints->ContinueFrom(*ck);
-      r.steps = std::move(ck->result.steps);
-      for (auto [to, from] : {std::pair{&r.p_pa, &ck->result.p_pa}, {&r.h_m, &ck->result.h_m},
-                              {&r.t_mid_k, &ck->result.t_mid_k}, {&r.t1_k, &ck->result.t1_k},
-                              {&r.t2_k, &ck->result.t2_k}, {&r.t_field_k, &ck->result.t_field_k}})
-        *to = std::move(*from);
-      state = std::move(ck->state);
-      solver.RestoreTransient(ck->history);
-      first = static_cast<size_t>(ck->next_step);
-      elapsed_before = ck->elapsed_s;
-      r.resumed_from_step = ck->next_step;
-    } else if (!unusable.empty()) {  // printed even with -q, as a checkpoint not written is
-      std::fprintf(stderr, "warning: the checkpoint %s is not used: %s; starting at A\n",
-                   checkpoint_path.c_str(), unusable.c_str());
-    } else if (!ro.quiet) {
-      std::fprintf(stderr, "no usable checkpoint %s for this case: starting at A\n",
-                   checkpoint_path.c_str());
-    }
+    const internal::ResumePoint at =
+        internal::ResumeFromCheckpoint(checkpoint_path, fingerprint, s_steps.size(), grid.size(),
+                                       ro.quiet, &*checkpoints, &r, &state, &solver);
+    first = at.first_step;
+    elapsed_before = at.elapsed_s;
+    r.resumed_from_step = at.resumed_from_step;
   }
   auto elapsed = [&] {
     return elapsed_before + std::chrono::duration<double>(Clock::now() - t_start).count();
