@@ -30,6 +30,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/surface_temperature.cpp
   src/ehl/film_energy.cpp
   src/ehl/film_energy_system.cpp
+  src/ehl/film_energy_factorization.cpp
   src/ehl/far_history.cpp
   src/ehl/film_augmented_preconditioner.cpp
   src/ehl/coarse_correction.cpp
