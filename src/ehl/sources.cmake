@@ -16,6 +16,8 @@ list(APPEND TEHL_SOURCES
   src/ehl/reused_lu_solver.cpp
   src/ehl/line_contact_solver.cpp
   src/ehl/line_contact_pressure.cpp
+  src/ehl/line_contact_hints.cpp
+  src/ehl/line_contact_sequencing.cpp
   src/ehl/line_contact_adaptive_step.cpp
   src/ehl/line_contact_transient.cpp
   src/ehl/line_contact_coupling.cpp
