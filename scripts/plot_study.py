@@ -105,7 +105,7 @@ def print_table(f, labels, status):
             ("mu_max", "max mu", 1.0, "{:.4f}"),
             ("T_surface_max", "max T_surface [K]", 1.0, "{:.1f}"),
             ("dT_flash_blok_max", "max Blok rise [K]", 1.0, "{:.2f}"),
-            ("wall_time", "wall [s]", 1.0, "{:.0f}")]
+            ("wall_time", "wall [s]", 1.0, "{:.3g}")]
     cols = [c for c in cols if c[0] in f["summary"]]  # index files of earlier versions
     head = ["scene"] + labels + [c[1] for c in cols] + ["steps", "status"]
     print("| " + " | ".join(head) + " |")
@@ -238,6 +238,9 @@ def main():
         if others:
             axes[0, 0].legend(fontsize=6)
         axes[-1, 0].set_xlabel(f"{lab} [{unit}]" if ticks is None else lab)
+        # Values over more than a decade and a half (a log range): a logarithmic axis.
+        if ticks is None and np.all(x > 0) and np.nanmax(x) >= 30 * np.nanmin(x):
+            axes[-1, 0].set_xscale("log")
         if ticks is not None:
             axes[-1, 0].set_xticks(range(len(ticks)), ticks)
         save(fig, lab.replace("/", "_").replace(".", "_"))
