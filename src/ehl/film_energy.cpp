@@ -10,6 +10,7 @@
 
 #include "base/number_text.hpp"
 #include "ehl/film_energy_system.hpp"
+#include "ehl/solid_heat_history.hpp"
 #include "tehl/error.hpp"
 #include "tehl/lubricant/lubricant.hpp"
 
@@ -235,6 +236,17 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
       in.omega2 = MovingHeatSource::DecayRate(solid2_, flow.u2_m_s);
     }
   }
+  // The solids' heat history (high-Peclet moving solids; finite-Peclet ones are quasi-steady).
+  internal::StepHistory history;
+  if (moving && transient && !options_.finite_peclet) {
+    history = internal::HistoryOfStep(grid_, *previous, flow.u1_m_s * dt_s, flow.u2_m_s * dt_s);
+    if (history.active) {
+      in.reach1_m = history.reach1_m;
+      in.reach2_m = history.reach2_m;
+      in.history1 = &history.history1;
+      in.history2 = &history.history2;
+    }
+  }
   if (!t->Matches(n, nz)) *t = Initial();
   if (!system_ || !options_.reuse_factorization) {
     system_ = std::make_unique<internal::FilmEnergySystem>(grid_, nz, options_.history_near_cells,
@@ -347,6 +359,11 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
     s.termination = Termination::kMaxIterations;
   }
   s.krylov_iterations = system.krylov_iterations() - krylov_before;
+  if (moving && transient && !options_.finite_peclet) {
+    internal::RememberLevels(grid_, *previous, flow.u1_m_s * dt_s, flow.u2_m_s * dt_s, t);
+  } else {
+    internal::ForgetLevels(t);
+  }
   if (s.iterations > 0) {
     s.balance = system.Balance(in, *t);
     s.mass_defect = system.mass_defect();

@@ -187,9 +187,15 @@ void FilmEnergySystem::Assemble(const FilmEnergyInputs& in,
     }
   }
   BuildMatrix(in);
-  rhs_.assign(n_ * block_, 0.0);  // surface rows: T_s - T0 - F sum G q = 0
+  rhs_.assign(n_ * block_, 0.0);  // surface rows: T_s - T0 - F sum G q = F H
   for (int i = 0; i < n_; ++i)
     for (int j = 0; j < nz_; ++j) rhs_[i * block_ + j] = b_(i, j);
+  if (!in.fixed_walls)
+    for (int s = 0; s < 2; ++s)
+      if (const Eigen::VectorXd* h = s == 0 ? in.history1 : in.history2) {
+        const double factor = s == 0 ? in.factor1 : in.factor2;
+        for (int i = 0; i < n_; ++i) rhs_[i * block_ + nz_ + s] = factor * (*h)[i];
+      }
 }
 
 Eigen::VectorXd FilmEnergySystem::Pack(const FilmTemperature& t, double t0_k) const {
@@ -235,7 +241,8 @@ void FilmEnergySystem::BuildMatrix(const FilmEnergyInputs& in) {
   const int near = near_cells_;
   const bool in_place = !values_.empty() && signature == signature_ && near == built_near_ &&
                         in.factor1 == built_factor1_ && in.factor2 == built_factor2_ &&
-                        in.omega1 == built_omega1_ && in.omega2 == built_omega2_;
+                        in.omega1 == built_omega1_ && in.omega2 == built_omega2_ &&
+                        in.reach1_m == built_reach1_ && in.reach2_m == built_reach2_;
   const int size = n_ * block_;
   size_t cursor = 0;
   if (!in_place) {
@@ -243,13 +250,22 @@ void FilmEnergySystem::BuildMatrix(const FilmEnergyInputs& in) {
     row_idx_.clear();
     values_.clear();
     signature_ = signature;
-    // The kernels follow the speeds (finite Peclet), the far parts the near band.
-    if (near != built_near_ || in.omega1 != built_omega1_ || in.omega2 != built_omega2_)
+    // The kernels follow the speeds (finite Peclet) or the step's reach (the high-Peclet
+    // history), the far parts the near band.
+    if (near != built_near_ || in.omega1 != built_omega1_ || in.omega2 != built_omega2_ ||
+        in.reach1_m != built_reach1_ || in.reach2_m != built_reach2_)
       for (int s = 0; s < 2; ++s) {
         const double omega = s == 0 ? in.omega1 : in.omega2;
-        if (finite_peclet_ && omega > 0) source_[s] = MovingHeatSource(grid_, omega);
+        const double reach = s == 0 ? in.reach1_m : in.reach2_m;
+        if (finite_peclet_ && omega > 0) {
+          source_[s] = MovingHeatSource(grid_, omega);
+        } else if (!finite_peclet_ && reach != source_[s].reach_m()) {
+          source_[s] = MovingHeatSource::Recent(grid_, reach);
+        }
         far_[s].Reset(source_[s], near);
       }
+    built_reach1_ = in.reach1_m;
+    built_reach2_ = in.reach2_m;
     built_factor1_ = in.factor1;
     built_factor2_ = in.factor2;
     built_omega1_ = in.omega1;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -27,6 +28,13 @@ struct FilmEnergyInputs {
   double factor1 = 0, factor2 = 0;                // 1/sqrt(pi rho c k u) of solids 1, 2
   // u/(2 kappa) of solids 1, 2 with finite-Peclet surface temperatures, else 0 [1/m]
   double omega1 = 0, omega2 = 0;
+  // The solids' heat history (src/ehl/solid_heat_history.hpp): the lags the step's own flux
+  // covers (u dt; infinite: all of them) and the earlier levels' part H (null: none)
+  // [m, W/m^2 m^(1/2)].
+  double reach1_m = std::numeric_limits<double>::infinity();
+  double reach2_m = std::numeric_limits<double>::infinity();
+  const Eigen::VectorXd* history1 = nullptr;
+  const Eigen::VectorXd* history2 = nullptr;
 };
 
 // Unknown / equation layout: column block i = [theta_i0 .. theta_i(nz-1), s1_i, s2_i], with
@@ -122,6 +130,8 @@ class FilmEnergySystem {
   std::vector<double> values_, rhs_;
   std::vector<char> signature_;  // upwind pattern and wall model of the built matrix
   double built_factor1_ = 0, built_factor2_ = 0, built_omega1_ = 0, built_omega2_ = 0;
+  double built_reach1_ = std::numeric_limits<double>::infinity();
+  double built_reach2_ = std::numeric_limits<double>::infinity();
   std::vector<int> fact_ptr_, fact_idx_;  // the factorized matrix (A or an approximation)
   std::vector<double> fact_val_;
   bool factorized_exact_ = false;

@@ -18,6 +18,15 @@ namespace {
 
 constexpr int kHeatingCuts = 8;      // heating scalings tried per energy solve [-]
 
+// The wall fluxes of an energy solve and the solids' heat history it hands on.
+void KeepWallFluxes(const FilmTemperature& from, FilmTemperature* to) {
+  to->q1_w_m2 = from.q1_w_m2;
+  to->q2_w_m2 = from.q2_w_m2;
+  to->travel1_m = from.travel1_m;
+  to->travel2_m = from.travel2_m;
+  to->earlier = from.earlier;
+}
+
 }  // namespace
 
 FilmField::FilmField(const UniformGrid& grid,
@@ -248,8 +257,7 @@ FilmField::EnergyUpdate FilmField::MapTemperature(const ContactConditions& c,
   out.ok = out.summary.usable() && next.t_k.allFinite();
   if (!out.ok) return out;
   out.max_change_k = (next.t_k - t_.t_k).cwiseAbs().maxCoeff();
-  t_.q1_w_m2 = next.q1_w_m2;
-  t_.q2_w_m2 = next.q2_w_m2;
+  KeepWallFluxes(next, &t_);
   *image = next.t_k;
   return out;
 }
@@ -322,8 +330,7 @@ FilmField::EnergyUpdate FilmField::UpdateTemperature(const ContactConditions& c,
       outer_ = AndersonMixer(5);
     }
     change = (next.t_k - t_.t_k).cwiseAbs().maxCoeff();
-    t_.q1_w_m2 = next.q1_w_m2;
-    t_.q2_w_m2 = next.q2_w_m2;
+    KeepWallFluxes(next, &t_);
     if (change < inner_tolerance || out.limited) {
       t_.t_k = next.t_k.cwiseMax(MinTemperature(c.temperature_k));
     } else {

@@ -29,6 +29,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/outlet_spike.cpp
   src/ehl/hertz_edge.cpp
   src/ehl/moving_line_source.cpp
+  src/ehl/solid_heat_history.cpp
   src/ehl/surface_temperature.cpp
   src/ehl/film_energy.cpp
   src/ehl/film_energy_system.cpp

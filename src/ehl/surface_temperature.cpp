@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "base/number_text.hpp"
@@ -28,14 +29,33 @@ MovingHeatSource::MovingHeatSource(const UniformGrid& grid)
       toeplitz_(2 * grid.size() - 1, 0.0),
       inlet_(grid.size()),
       outlet_(grid.size(), 0.0) {
+  FillHighPeclet();
+}
+
+MovingHeatSource MovingHeatSource::Recent(const UniformGrid& grid, double reach_m) {
+  if (!(reach_m > 0))
+    throw InputError(InputProblem{"", 0, "reach_m", internal::FormatReal(reach_m), "must be > 0",
+                                  "the travel of a time step u_s dt > 0 [m], or infinity"});
+  MovingHeatSource s(grid);
+  s.reach_ = reach_m;
+  s.FillHighPeclet();
+  return s;
+}
+
+void MovingHeatSource::FillHighPeclet() {
+  // The part of a cell at distances [lo, hi] from x_i (upstream) within the reach.
+  const double r = reach_;
+  auto weight = [r](double lo, double hi) {
+    return TwoRootDifference(std::min(hi, r), std::min(lo, r));
+  };
   // Cell k >= 1 seen from node i = k + m: [x_i - (m + 1/2) dx, x_i - (m - 1/2) dx], clipped at
   // x_i for m = 0 (the integral stops at x_i).
   double* lag = toeplitz_.data() + (n_ - 1);
-  lag[0] = TwoRootDifference(0.5 * dx_, 0.0);
-  for (int m = 1; m < n_; ++m) lag[m] = TwoRootDifference((m + 0.5) * dx_, (m - 0.5) * dx_);
+  lag[0] = weight(0.0, 0.5 * dx_);
+  for (int m = 1; m < n_; ++m) lag[m] = weight((m - 0.5) * dx_, (m + 0.5) * dx_);
   // The inlet half cell [x_0, x_0 + dx/2] seen from node i: nothing at i = 0.
   inlet_[0] = 0.0;
-  for (int i = 1; i < n_; ++i) inlet_[i] = TwoRootDifference(i * dx_, (i - 0.5) * dx_);
+  for (int i = 1; i < n_; ++i) inlet_[i] = weight((i - 0.5) * dx_, i * dx_);
   // The outlet half cell [x_(n-1) - dx/2, x_(n-1)] is seen from its own node only.
   outlet_[n_ - 1] = lag[0];
 }
@@ -101,6 +121,57 @@ double MovingHeatSource::Factor(const SolidThermal& s, double speed_m_s) {
 double MovingHeatSource::DecayRate(const SolidThermal& s, double speed_m_s) {
   Factor(s, speed_m_s);  // the same checks
   return 0.5 * speed_m_s * s.density_kg_m3 * s.heat_capacity_j_kgk / s.conductivity_w_mk;
+}
+
+Eigen::VectorXd MovingHeatSource::History(double reach_m,
+                                          const std::vector<FluxSpan>& spans) const {
+  ProblemList bad;
+  if (!high_peclet() || !(reach_m > 0))
+    bad.Add({"", 0, "reach_m", internal::FormatReal(reach_m), "must be > 0",
+             "a travel u_s dt > 0 [m] (the history is of the high-Peclet form)"});
+  for (const FluxSpan& sp : spans) {
+    if (!sp.q_w_m2 || sp.q_w_m2->size() != n_)
+      bad.Add({"", 0, "FluxSpan::q_w_m2", sp.q_w_m2 ? std::to_string(sp.q_w_m2->size()) : "null",
+               "must have one value per grid node", std::to_string(n_) + " values"});
+    if (!(sp.travel_m >= 0))
+      bad.Add({"", 0, "FluxSpan::travel_m", internal::FormatReal(sp.travel_m), "must be >= 0",
+               "u_s dt [m], or infinity"});
+  }
+  bad.ThrowIfAny();
+  Eigen::VectorXd h = Eigen::VectorXd::Zero(n_);
+  if (spans.empty()) return h;
+  // Span j covers the lags [edge[j], edge[j + 1]]; the last one has no upper edge.
+  const int m = static_cast<int>(spans.size());
+  std::vector<double> edge(m + 1);
+  edge[0] = reach_m;
+  for (int j = 0; j < m; ++j)
+    edge[j + 1] =
+        j + 1 == m ? std::numeric_limits<double>::infinity() : edge[j] + spans[j].travel_m;
+  // Whole interior cells inside one span take the kernel's own weights.
+  std::vector<double> whole(n_, 0.0);
+  for (int l = 1; l < n_; ++l) whole[l] = TwoRootDifference((l + 0.5) * dx_, (l - 0.5) * dx_);
+  for (int i = 1; i < n_; ++i) {
+    double sum = 0;
+    int j = 0;
+    // Cells from node i upstream: distances [lo, hi] from x_i grow as k falls.
+    for (int k = i; k >= 0; --k) {
+      const double hi = k == 0 ? i * dx_ : (i - k + 0.5) * dx_;
+      double lo = std::max(k == i ? 0.0 : (i - k - 0.5) * dx_, reach_m);
+      while (j + 1 < m && edge[j + 1] <= lo) ++j;
+      if (k > 0 && k < i && lo == (i - k - 0.5) * dx_ && hi <= edge[j + 1]) {
+        sum += (*spans[j].q_w_m2)[k] * whole[i - k];
+        continue;
+      }
+      while (lo < hi) {
+        while (j + 1 < m && edge[j + 1] <= lo) ++j;
+        const double top = std::min(hi, edge[j + 1]);
+        sum += (*spans[j].q_w_m2)[k] * TwoRootDifference(top, lo);
+        lo = top;
+      }
+    }
+    h[i] = sum;
+  }
+  return h;
 }
 
 Eigen::VectorXd MovingHeatSource::Rise(const SolidThermal& solid,

@@ -55,6 +55,17 @@ void RequireFinite(const MeshCycleCheckpoint& c) {
   RequireFinite(t.t_k, "film temperature");
   for (const auto* v : {&t.t1_k, &t.t2_k, &t.q1_w_m2, &t.q2_w_m2})
     RequireFinite(*v, "surface temperature or heat flux");
+  auto require_travel = [](double v) {
+    if (!(v >= 0)) throw Unusable("it holds a negative or undefined travel of a heat-flux level");
+  };
+  require_travel(t.travel1_m);
+  require_travel(t.travel2_m);
+  for (const SolidFluxLevel& l : t.earlier) {
+    RequireFinite(l.q1_w_m2, "earlier heat flux");
+    RequireFinite(l.q2_w_m2, "earlier heat flux");
+    require_travel(l.travel1_m);
+    require_travel(l.travel2_m);
+  }
   const LineContactSolver::TransientHistory& h = c.history;
   for (const auto* v : {&h.q1, &h.q2, &h.q3}) RequireFinite(*v, "transient history");
   for (double v : {h.dt_prev_s, h.dt_prev2_s, h.next_substep_s, h.c_prev.reduced_radius_m,
@@ -114,6 +125,18 @@ std::optional<MeshCycleCheckpoint> Read(const std::string& path) {
     FilmTemperature& t = s.temperature;
     t.t_k = in.M();
     for (auto* v : {&t.t1_k, &t.t2_k, &t.q1_w_m2, &t.q2_w_m2}) *v = in.E();
+    t.travel1_m = in.F();
+    t.travel2_m = in.F();
+    const std::int64_t levels = in.I();
+    if (levels < 0 || levels > kMaxSolidFluxLevels)
+      throw Unusable("it holds " + std::to_string(levels) + " earlier heat-flux levels");
+    t.earlier.resize(static_cast<size_t>(levels));
+    for (SolidFluxLevel& l : t.earlier) {
+      l.q1_w_m2 = in.E();
+      l.q2_w_m2 = in.E();
+      l.travel1_m = in.F();
+      l.travel2_m = in.F();
+    }
     c.history.levels = static_cast<int>(in.I());
     c.history.q1 = in.E();
     c.history.q2 = in.E();

@@ -36,6 +36,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -71,6 +72,18 @@ struct FilmFlowField {
   double u2_m_s = 0;                      // speed of surface 2 in +x; > 0 with moving solids [m/s]
 };
 
+// The wall heat fluxes of one earlier time level and how far the solids moved during it: what
+// the solids remember of it (include/tehl/ehl/surface_temperature.hpp, History).
+struct SolidFluxLevel {
+  Eigen::VectorXd q1_w_m2;  // heat flux from the film into solid 1 [W/m^2]
+  Eigen::VectorXd q2_w_m2;  // heat flux from the film into solid 2 [W/m^2]
+  double travel1_m = 0;     // u1 dt of the level [m]; infinite for a steady level
+  double travel2_m = 0;     // u2 dt of the level [m]; infinite for a steady level
+};
+
+// The most earlier levels a FilmTemperature keeps; shorter steps merge the oldest ones [-].
+inline constexpr int kMaxSolidFluxLevels = 256;
+
 // Temperatures and wall heat fluxes: the solution, the previous time level, the initial guess.
 struct FilmTemperature {
   Eigen::MatrixXd t_k;            // n x nz film temperature; columns 0, nz-1 = the surfaces [K]
@@ -78,6 +91,14 @@ struct FilmTemperature {
   Eigen::VectorXd t2_k;           // surface temperature of solid 2 (= column nz-1) [K]
   Eigen::VectorXd q1_w_m2;        // heat flux from the film into solid 1 [W/m^2]
   Eigen::VectorXd q2_w_m2;        // heat flux from the film into solid 2 [W/m^2]
+  // The solids' heat history (transient steps with moving high-Peclet solids; docs/theory.md,
+  // "The solids' heat history"): how far the surfaces moved during this level (u dt), and the
+  // earlier levels, newest first, back to one transit of the grid. A steady level has
+  // infinite travels and no earlier levels (its flux had always acted), as has a level whose
+  // solids are quasi-steady (fixed walls, finite_peclet).
+  double travel1_m = std::numeric_limits<double>::infinity();  // [m]
+  double travel2_m = std::numeric_limits<double>::infinity();  // [m]
+  std::vector<SolidFluxLevel> earlier;
   double MaxTemperature() const;  // max over the film [K]
   double MeanTemperature(int i) const;  // cross-film mean at node i (trapezoidal in xi) [K]
   bool Matches(int n, int nz) const;    // every field has the sizes of an n x nz film

@@ -29,9 +29,18 @@
 // sqrt(2/(pi omega)) J(omega X)). G is then full (the surface warms upstream of a source
 // too, over a length of about 1/omega), Toeplitz apart from the half cells at both ends, and
 // depends on the solid and its speed through omega. Heat still enters only on the grid.
+//
+// Transient runs (high-Peclet form): the flux a surface point met along its way through the
+// grid changes with time. A point at x_i at time t was at x' = x_i - l at the time its
+// surface had l still to travel, so the integral takes each lag l = x_i - x' from the flux of
+// the time level during which the surface covered that stretch (Duhamel's integral along the
+// point's path; docs/theory.md, "The solids' heat history"). The lags a step covers itself,
+// l <= u_s dt, see the step's own (unknown) flux: the kernel restricted to them (Recent); the
+// earlier levels' part is known (History).
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 #include "tehl/ehl/grid.hpp"
@@ -45,18 +54,30 @@ struct SolidThermal {
   double conductivity_w_mk = 0;    // k_s [W/(m K)]; > 0
 };
 
+// One earlier time level of the flux into a solid, seen by the history integral.
+struct FluxSpan {
+  const Eigen::VectorXd* q_w_m2 = nullptr;  // the level's flux at the nodes [W/m^2]
+  double travel_m = 0;  // how far the surface moved during the level (u_s dt) [m]; >= 0,
+                        // infinite for a steady level (its flux had always acted)
+};
+
 // The moving-heat-source integral on a UniformGrid. Immutable; thread-safe to read.
 class MovingHeatSource {
  public:
   MovingHeatSource() = default;
   // The high-Peclet form of seed 004 eqs. (14)-(15).
   explicit MovingHeatSource(const UniformGrid& grid);
+  // The high-Peclet form restricted to the lags 0 <= x_i - x' <= reach_m: the flux of the
+  // last reach_m of travel (a transient step's own, reach = u_s dt). reach_m = infinity is
+  // the whole kernel. Throws InputError unless reach_m > 0.
+  static MovingHeatSource Recent(const UniformGrid& grid, double reach_m);
   // Jaeger's kernel at the decay rate omega = u_s/(2 kappa_s) [1/m] (DecayRate); throws
   // InputError unless omega is finite and > 0.
   MovingHeatSource(const UniformGrid& grid, double omega_1_m);
 
   int size() const { return n_; }
   bool high_peclet() const { return omega_ == 0; }
+  double reach_m() const { return reach_; }    // infinite unless made by Recent [m]
   double omega_1_m() const { return omega_; }  // 0 for the high-Peclet form [1/m]
   // G_ik [m^(1/2)]: the exact integral of the kernel over cell k seen from node i; in the
   // high-Peclet form only up to x_i (0 for k > i).
@@ -76,11 +97,21 @@ class MovingHeatSource {
                        const Eigen::VectorXd& q_w_m2) const;
   // The cell length of node k: dx, dx/2 at both ends [m] (the cells the flux is constant on).
   double CellLength(int k) const;
+  // The earlier levels' part of the high-Peclet integral, beyond the lag reach_m (> 0):
+  //   H_i = sum_j integral over x' in cell k, l = x_i - x' in span j, of q_j(x') / sqrt(l),
+  // the spans following each other upstream from l = reach_m (span 0 the newest), the last
+  // one unbounded whatever its travel; each flux piecewise constant on the cells of its
+  // nodes; exact integrals of the kernel over the pieces [W/m^2 m^(1/2)]: T_s - T0 = F (sum
+  // of the Recent(reach_m) weights times the step's own flux + H). Zero without spans.
+  // O(n^2 + n spans). Throws InputError on a flux of the wrong size or a travel < 0.
+  Eigen::VectorXd History(double reach_m, const std::vector<FluxSpan>& spans) const;
 
  private:
+  void FillHighPeclet();  // the weights of the high-Peclet form within reach_
   int n_ = 0;
   double dx_ = 0;
   double omega_ = 0;  // 0: high-Peclet form [1/m]
+  double reach_ = std::numeric_limits<double>::infinity();  // lags kept (Recent) [m]
   // G_ik of the interior cells 1 <= k <= n - 2 as a function of the lag i - k, stored at
   // n - 1 + i - k (lags -(n-1) ... n-1; zero below 0 in the high-Peclet form) [m^(1/2)].
   std::vector<double> toeplitz_;

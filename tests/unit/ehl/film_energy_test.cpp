@@ -452,20 +452,52 @@ TEST(FilmEnergySolver, StepInHeatingRelaxesToTheNewSteadyState) {
 }
 
 TEST(FilmEnergySolver, ImplicitEulerIsFirstOrderInTime) {
-  // The film relaxes by conduction to the (quasi-steady) surfaces in rho cp h^2/(pi^2 k):
-  // 0.3 us at h_c = 0.5 um, 2 us in the 1.35 um inlet. March to t = 2 us with 10 ... 160 steps:
-  // successive differences halve (Richardson: e(dt) - e(dt/2) = C dt/2 + O(dt^2)).
+  // The film relaxes by conduction to the surfaces in rho cp h^2/(pi^2 k): 0.3 us at h_c =
+  // 0.5 um, 2 us in the 1.35 um inlet; the surfaces, which remember their heat history, like
+  // half-spaces (sqrt(t)). March to t = 2 us with 10 ... 640 steps: once dt is below the
+  // film's relaxation time (from 40 steps), successive differences halve (Richardson: e(dt) -
+  // e(dt/2) = C dt/2 + O(dt^2)). 320 and 640 steps keep more levels than a FilmTemperature
+  // holds (kMaxSolidFluxLevels): the merged history keeps the order.
   const TransientCase tc;
   std::vector<Eigen::MatrixXd> sol;
-  for (int steps : {10, 20, 40, 80, 160}) sol.push_back(tc.March(steps, 2e-6).t_k);
+  for (int steps : {10, 20, 40, 80, 160, 320, 640}) sol.push_back(tc.March(steps, 2e-6).t_k);
   std::vector<double> d;
   for (size_t i = 1; i < sol.size(); ++i) d.push_back((sol[i] - sol[i - 1]).cwiseAbs().maxCoeff());
   for (size_t i = 1; i < d.size(); ++i) {
     const double order = std::log2(d[i - 1] / d[i]);
     std::printf("dt refinement %zu: difference %.3e K, order %.3f\n", i, d[i], order);
-    if (i >= 2) {
+    if (i >= 3) {
       EXPECT_NEAR(order, 1.0, 0.1) << i;
     }
+  }
+}
+
+TEST(FilmEnergySolver, SolidsKeepTheirHeatWhenTheHeatingStops) {
+  // Steady heating, then none for one step of dt. A surface point at x has been heated for
+  // about (x - x_0)/u (450 us at the hottest point, x - x_0 ~ 0.45 mm, u1 = 1 m/s) and cools
+  // for dt: 1-D conduction into the half-space (Carslaw & Jaeger 1959, section 2.9) keeps
+  // [sqrt(t_h + dt) - sqrt(dt)] / sqrt(t_h) of a uniform flux's rise: 0.985 after 0.1 us,
+  // 0.956 after 1 us. Quasi-steady solids (each step's flux as if it had always acted) kept
+  // 0.84 and 0.35 here: the film cools to the inlet temperature within a microsecond and its
+  // wall flux turns toward the film.
+  const TransientCase tc;
+  const FilmTemperature hot = tc.Steady(tc.before);
+  FilmFlowField off = tc.before;
+  off.heating_w_m3.setZero();
+  Eigen::Index hottest = 0;
+  const double rise = hot.t1_k.maxCoeff(&hottest) - kT0;
+  for (double dt : {1e-7, 1e-6}) {
+    FilmTemperature next = hot;
+    const auto s = tc.solver.Solve(off, &hot, dt, &next);
+    ASSERT_TRUE(s.usable()) << s.BriefReport();
+    const double kept = (next.t1_k[hottest] - kT0) / rise;
+    const double t_h = (tc.g.x(hottest) - tc.g.x(0)) / tc.before.u1_m_s;
+    const double one_d = (std::sqrt(t_h + dt) - std::sqrt(dt)) / std::sqrt(t_h);
+    std::printf("dt %.0e s: surface 1 keeps %.4f of its %.2f K rise (1-D: %.4f)\n", dt, kept, rise,
+                one_d);
+    // The flux is not uniform along the path (measured 0.988, 0.927), and the film draws
+    // heat back from the walls during the step: the uniform-flux value within 0.04.
+    EXPECT_NEAR(kept, one_d, 0.04);
   }
 }
 
