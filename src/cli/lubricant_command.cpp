@@ -18,7 +18,11 @@
 #include "lubricant/lubricant_schema.hpp"
 #include "scene/case_reader.hpp"
 #include "tehl/error.hpp"
+#include "tehl/lubricant/barus_viscosity.hpp"
+#include "tehl/lubricant/constant_viscosity.hpp"
 #include "tehl/lubricant/lubricant.hpp"
+#include "tehl/lubricant/roelands_gamma_viscosity.hpp"
+#include "tehl/lubricant/roelands_viscosity.hpp"
 
 namespace tehl::cli {
 namespace {
@@ -77,6 +81,30 @@ Range ParseRange(const std::string& option,
     return bad(rule);
   }
   return r;
+}
+
+// The pressure-viscosity coefficient of the dimensionless groups, named by where it comes
+// from (docs/case_format.md, "Lubricant files"): Houpert's alpha at T0 for the Roelands laws,
+// the law's own alpha for Barus, none for a constant viscosity.
+std::string AlphaLine(const ViscosityModel& law, double t0_k) {
+  const double alpha_per_gpa = law.PressureViscosityCoefficient() * 1e9;
+  char line[160];
+  if (dynamic_cast<const RoelandsViscosity*>(&law) ||
+      dynamic_cast<const RoelandsGammaViscosity*>(&law))
+    std::snprintf(line, sizeof line,
+                  "Houpert pressure-viscosity coefficient alpha = Z (ln eta0 + 9.67) / 1.96e8 Pa "
+                  "= %.5g 1/GPa (at T0 = %.2f K)",
+                  alpha_per_gpa, t0_k);
+  else if (dynamic_cast<const BarusViscosity*>(&law))
+    std::snprintf(line, sizeof line, "Barus pressure-viscosity coefficient alpha = %.5g 1/GPa",
+                  alpha_per_gpa);
+  else if (dynamic_cast<const ConstantViscosity*>(&law))
+    std::snprintf(line, sizeof line,
+                  "pressure-viscosity coefficient alpha = 0 1/GPa (constant viscosity)");
+  else
+    std::snprintf(line, sizeof line, "pressure-viscosity coefficient alpha = %.5g 1/GPa",
+                  alpha_per_gpa);
+  return line;
 }
 
 }  // namespace
@@ -173,8 +201,7 @@ Command AddLubricantCommand(CLI::App& app) {
           }
         }
         if (with_csv) internal::WriteTextAtomically(args->csv, csv.str());
-        std::printf("\nHoupert pressure-viscosity coefficient alpha = %.5g 1/GPa\n",
-                    lube.viscosity().PressureViscosityCoefficient() * 1e9);
+        std::printf("\n%s\n", AlphaLine(lube.viscosity(), t0).c_str());
         std::fflush(stdout);
         return kExitOk;
       }};

@@ -90,6 +90,43 @@ void CheckViscosityIsPlausible(Document* doc, double t0_k) {
   }
 }
 
+// Roelands' indices far below any lubricating oil, where a coefficient given in the index's
+// place is the likely cause. The oils of seed 004 have Z = 0.62 and 0.5685 and their
+// viscosity-temperature coefficients at 40 C, 0.046 and 0.05763 1/K, give S0 = beta (T0 - 138)
+// / (ln eta0 + 9.67) = 1.07 and 1.26 (VALIDATION.md sections 1 and 5); the reference oil of
+// VALIDATION.md section 3 has Z = 0.68. A tenth of those is no oil: a pressure-viscosity
+// coefficient alpha written as Z (2.4e-8 in 1/Pa, 0.024 in 1/MPa) or a coefficient beta written
+// as S0 (0.02 to 0.07 1/K) lands there and would make the film silently near-isoviscous, or
+// near-isothermal in viscosity.
+constexpr double kMinOilPressureIndex = 0.05;
+constexpr double kMinOilTemperatureIndex = 0.1;
+
+void CheckRoelandsIndicesArePlausible(Document* doc) {
+  if (!doc->Has("viscosity", "model")) return;
+  const std::string model = doc->String("viscosity", "model");
+  const bool roelands = model == ToString(ViscosityLaw::kRoelands);
+  if (!roelands && model != ToString(ViscosityLaw::kRoelandsGamma)) return;
+  if (doc->Given("viscosity", "pressure_index") && !Rejected(*doc, "viscosity", "pressure_index") &&
+      doc->Real("viscosity", "pressure_index") < kMinOilPressureIndex) {
+    doc->Problem("viscosity", "pressure_index",
+                 "below any lubricating oil (Z of the seed 004 oils: 0.62, 0.5685): a "
+                 "pressure-viscosity coefficient alpha in 1/Pa or 1/MPa? Z is dimensionless, "
+                 "Z = alpha x 1.96e8 Pa / (ln(eta0 / 1 Pa s) + 9.67) (Houpert); or use model "
+                 "\"barus\" with pressure_coefficient_per_pa",
+                 "a Roelands pressure index Z >= 0.05 [-]");
+  }
+  if (roelands && doc->Given("viscosity", "temperature_index") &&
+      !Rejected(*doc, "viscosity", "temperature_index") &&
+      doc->Real("viscosity", "temperature_index") < kMinOilTemperatureIndex) {
+    doc->Problem("viscosity", "temperature_index",
+                 "below any lubricating oil (S0 of the seed 004 oils at 40 C: 1.07, 1.26): a "
+                 "viscosity-temperature coefficient beta = -d ln(eta)/dT in 1/K? S0 is "
+                 "dimensionless, S0 = beta (T0 - 138 K) / (ln(eta0 / 1 Pa s) + 9.67); or use "
+                 "model \"roelands_gamma\" with temperature_coefficient_per_k",
+                 "a Roelands temperature index S0 >= 0.1 [-]");
+  }
+}
+
 Lubricant Read(Document doc) {
   for (const auto& p : doc.problems())
     if (p.key == "(syntax)" || p.key == "(file)") doc.ThrowIfProblems();
@@ -117,6 +154,7 @@ Lubricant Read(Document doc) {
     conductivity = laws.Build("thermal", [&] { return MakeConductivityModel(law, k0); });
   }
   CheckViscosityIsPlausible(&doc, laws.t0());
+  CheckRoelandsIndicesArePlausible(&doc);
   std::optional<EyringParameters> eyring;
   if (doc.HasSection("eyring"))
     eyring = EyringParameters{doc.Real("eyring", "eyring_stress_pa"),

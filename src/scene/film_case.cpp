@@ -139,10 +139,35 @@ std::string RoughnessResolutionNote(const FilmCase& film, double dx_m, int nodes
   return text;
 }
 
+std::vector<std::string> LongWavinessNotes(const FilmCase& film, double dx_m, int nodes) {
+  std::vector<std::string> notes;
+  if (!film.effects.roughness || !(dx_m > 0) || nodes < 2) return notes;
+  const double span_m = dx_m * (nodes - 1);
+  const std::pair<const char*, const SurfaceShape*> shapes[] = {{"surface1", film.surface1.get()},
+                                                                {"surface2", film.surface2.get()}};
+  for (const auto& [name, shape] : shapes) {
+    const auto* wave = dynamic_cast<const SinusoidalWaviness*>(shape);
+    if (!wave || !(wave->amplitude_m() > 0)) continue;
+    const double spans = wave->wavelength_m() / span_m;
+    if (spans <= kLongWaveSpans) continue;
+    char text[480];
+    std::snprintf(text, sizeof text,
+                  "the waviness of %s (wavelength_m = %.4g m) is %.3g times as long as the film "
+                  "grid (%.4g mm): across the contact it is a nearly uniform offset and tilt, "
+                  "which the film takes up, so it does not act as roughness (only the steps it "
+                  "needs, dt um <= dx, remain); a wavelength in micrometres written in metres? "
+                  "(50 um = 5e-05 m)",
+                  name, wave->wavelength_m(), spans, span_m * 1e3);
+    notes.push_back(text);
+  }
+  return notes;
+}
+
 std::vector<std::string> InputNotes(const FilmCase& film, double dx_m, int nodes) {
   std::vector<std::string> notes;
   const std::string wave = RoughnessResolutionNote(film, dx_m, nodes);
   if (!wave.empty()) notes.push_back(wave);
+  for (std::string& n : LongWavinessNotes(film, dx_m, nodes)) notes.push_back(std::move(n));
   if (film.lubricant) {
     const ViscosityModel& law = film.lubricant->viscosity();
     const char* name = dynamic_cast<const RoelandsGammaViscosity*>(&law) ? "roelands_gamma"

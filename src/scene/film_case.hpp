@@ -97,13 +97,24 @@ inline constexpr double kWaveCellsNote = 14.0;
 // grid_points (2^k + 1, the same x range) that give it kWaveCellsResolved.
 std::string RoughnessResolutionNote(const FilmCase& film, double dx_m, int nodes);
 
+// A sinusoidal waviness longer than this many times the film grid's span is, across the
+// contact, an offset and a tilt of at most 2 pi A / kLongWaveSpans over the grid, which the film
+// takes up by its approach: no roughness. Such a wavelength is most often micrometres written
+// in metres (wavelength_m = 50.0 for 50 um) [-].
+inline constexpr double kLongWaveSpans = 10.0;
+
+// One note per sinusoidal waviness longer than kLongWaveSpans grid spans (the grid of `nodes`
+// nodes at spacing dx [m]).
+std::vector<std::string> LongWavinessNotes(const FilmCase& film, double dx_m, int nodes);
+
 // An inlet temperature more than this from the lubricant file's reference temperature takes
 // the exponential (roelands_gamma, barus) temperature laws beyond where their one gamma
 // describes a real oil (lubricants/sae40.toml: 7.2 instead of 12.5-16.3 mPa s at 100 C) [K].
 inline constexpr double kGammaLawNoteK = 30.0;
 
 // The notes on the inputs a run prints before its results (and `case --check` with its
-// plan): RoughnessResolutionNote, and an inlet far from an exponential law's T0.
+// plan): RoughnessResolutionNote, LongWavinessNotes, and an inlet far from an exponential
+// law's T0.
 std::vector<std::string> InputNotes(const FilmCase& film, double dx_m, int nodes);
 
 // Reads [lubricant], [effects], [numerics] and [surfaces]; problems go into `doc`.

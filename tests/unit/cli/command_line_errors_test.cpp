@@ -221,6 +221,39 @@ TEST(CommandLineErrors, AWavinessOnTooFewCellsIsNotedWithTheGridThatResolvesIt) 
   EXPECT_EQ(ok.out.find("waviness"), std::string::npos) << ok.out;
 }
 
+// A waviness of 50 um written as wavelength_m = 50.0 is, across the seed 004 pair's film grid,
+// an offset the film takes up: `case --check` notes it with the unit slip. The grid spans
+// -4.5 .. 1.5 b_max, b_max = (8 w R / (pi E'))^(1/2) = 109.5 um at D in the default steel
+// (w = 116.14 kN/m, R = 9.184 mm, E' = 226.4 GPa; VALIDATION.md sections 1 and 5): 0.657 mm,
+// so 50 m is 7.61e4 grids. The 50 um wave (0.076 grids) and a 5 mm one (7.6 grids, a form
+// deviation across the contact) are not noted.
+TEST(CommandLineErrors, AWavinessLongerThanTenGridsIsNotedAsNoRoughness) {
+  const std::string path = testing::UniqueTempPath("long_wave.toml");
+  auto check = [&](const std::string& wavelength) {
+    std::ofstream(path, std::ios::trunc) << GearCase(
+        "pinion_speed_rpm = 1000.0",
+        "[effects]\nroughness = true\n"
+        "[surfaces.surface1]\nroughness = \"sinusoidal\"\namplitude_m = 1e-7\nwavelength_m = " +
+            wavelength + "\n[numerics]\ngrid_points = 129\n");
+    return testing::RunTehl("case --check '" + path + "'");
+  };
+  const testing::RunResult slip = check("50.0");
+  ASSERT_EQ(slip.exit_code, 0) << slip.err;
+  EXPECT_NE(slip.out.find("the waviness of surface1 (wavelength_m = 50 m) is 7.61e+04 times as "
+                          "long as the film grid (0.65"),
+            std::string::npos)
+      << slip.out;
+  EXPECT_NE(slip.out.find("micrometres written in metres"), std::string::npos) << slip.out;
+  for (const char* wavelength : {"5e-5", "5e-3"}) {
+    const testing::RunResult ok = check(wavelength);
+    EXPECT_EQ(ok.exit_code, 0) << ok.err;
+    EXPECT_EQ(ok.out.find("times as long as the film grid"), std::string::npos)
+        << wavelength << "\n"
+        << ok.out;
+  }
+  std::remove(path.c_str());
+}
+
 // A step count below one per contact zone is raised, and the plan says so.
 TEST(CommandLineErrors, AStepCountBelowTheZonesIsRaisedAndSaidSo) {
   const std::string path = testing::UniqueTempPath("one_step.toml");

@@ -85,6 +85,51 @@ TEST(LubricantCommand, PrintDefaultListsEveryLubricantSection) {
     EXPECT_NE(r.out.find(s), std::string::npos) << s;
 }
 
+// The alpha under the table is named by the law it comes from: Houpert's for the Roelands
+// laws, the file's own for Barus, none for a constant viscosity (docs/case_format.md,
+// "Lubricant files").
+TEST(LubricantCommand, NamesWhereThePressureViscosityCoefficientComesFrom) {
+  // Houpert (VALIDATION.md section 1) with Table 2 of seed 004 (VALIDATION.md section 5):
+  // 0.62 (ln 0.1140574 + 9.67) / 1.96e8 = 23.721 1/GPa.
+  const testing::RunResult sae40 = RunTehl("lubricant sae40 --p 0 --T 313.15");
+  ASSERT_TRUE(sae40.exited);
+  ASSERT_EQ(sae40.exit_code, 0) << sae40.err;
+  EXPECT_NE(sae40.out.find("Houpert pressure-viscosity coefficient alpha = Z (ln eta0 + 9.67) / "
+                           "1.96e8 Pa = 23.721 1/GPa (at T0 = 313.15 K)"),
+            std::string::npos)
+      << sae40.out;
+
+  namespace fs = std::filesystem;
+  const fs::path dir = testing::UniqueTempPath("alpha_laws");
+  fs::create_directories(dir);
+  const std::string head =
+      "name = \"oil\"\nsource = \"a test\"\nreference_temperature_k = 313.15\n"
+      "[density]\nmodel = \"constant\"\ndensity_kg_m3 = 880.0\n"
+      "[thermal]\nconductivity_model = \"constant\"\nconductivity_w_mk = 0.13\n"
+      "heat_capacity_j_kgk = 1900.0\n";
+  std::ofstream(dir / "barus.toml")
+      << head
+      << "[viscosity]\nmodel = \"barus\"\nviscosity_pa_s = 0.1\n"
+         "pressure_coefficient_per_pa = 2.2e-8\ntemperature_coefficient_per_k = 0.03\n";
+  std::ofstream(dir / "constant.toml")
+      << head << "[viscosity]\nmodel = \"constant\"\nviscosity_pa_s = 0.1\n";
+  // Barus: the file's alpha, 2.2e-8 1/Pa = 22 1/GPa; not Houpert's.
+  const testing::RunResult barus =
+      RunTehl("lubricant '" + (dir / "barus.toml").string() + "' --p 0 --T 313.15");
+  ASSERT_EQ(barus.exit_code, 0) << barus.err;
+  EXPECT_NE(barus.out.find("Barus pressure-viscosity coefficient alpha = 22 1/GPa"),
+            std::string::npos)
+      << barus.out;
+  EXPECT_EQ(barus.out.find("Houpert"), std::string::npos) << barus.out;
+  const testing::RunResult constant =
+      RunTehl("lubricant '" + (dir / "constant.toml").string() + "' --p 0 --T 313.15");
+  ASSERT_EQ(constant.exit_code, 0) << constant.err;
+  EXPECT_NE(constant.out.find("alpha = 0 1/GPa (constant viscosity)"), std::string::npos)
+      << constant.out;
+  EXPECT_EQ(constant.out.find("Houpert"), std::string::npos) << constant.out;
+  fs::remove_all(dir);
+}
+
 // A lubricant file beside the case is found by its name without ".toml", as the shipped
 // names are; a name found nowhere lists the folders searched.
 TEST(LubricantCommand, ACaseFindsItsOwnLubricantByNameAndAMissingOneListsTheFolders) {

@@ -130,6 +130,40 @@ TEST(LubricantFile, ViscosityInTheWrongUnitIsReportedAtItsLine) {
   EXPECT_NO_THROW(Lubricant::FromString(cold, "lub.toml"));
 }
 
+TEST(LubricantFile, CoefficientsGivenAsRoelandsIndicesAreReportedAtTheirLines) {
+  // Houpert's alpha of the SAE 40 of seed 004, 2.372e-8 1/Pa (VALIDATION.md sections 1 and 5),
+  // written as Z, and its viscosity-temperature coefficient 0.046 1/K (seed 004 Table 2)
+  // written as S0: both would load as a nearly isoviscous oil whose viscosity hardly falls
+  // with temperature.
+  const auto p = Problems(std::string(kHead) +
+                          "[viscosity]\n"                  // 11
+                          "model = \"roelands\"\n"         // 12
+                          "viscosity_pa_s = 0.1140574\n"   // 13
+                          "pressure_index = 2.372e-8\n"    // 14
+                          "temperature_index = 0.046\n");  // 15
+  ASSERT_EQ(p.size(), 2u) << ::testing::PrintToString(p);
+  EXPECT_TRUE(Has(p, "lub.toml:14: viscosity.pressure_index = 2.372e-08", "alpha in 1/Pa")) << p[0];
+  EXPECT_TRUE(Has(p, "lub.toml:15: viscosity.temperature_index = 0.046", "beta")) << p[1];
+  // Alpha in 1/MPa (0.02372) as the Z of the gamma form, the law of the shipped files.
+  const auto mpa = Problems(std::string(kHead) +
+                            "[viscosity]\n"                              // 11
+                            "model = \"roelands_gamma\"\n"               // 12
+                            "viscosity_pa_s = 0.1140574\n"               // 13
+                            "pressure_index = 0.02372\n"                 // 14
+                            "temperature_coefficient_per_k = 0.046\n");  // 15
+  ASSERT_EQ(mpa.size(), 1u) << ::testing::PrintToString(mpa);
+  EXPECT_TRUE(Has(mpa, "lub.toml:14: viscosity.pressure_index = 0.02372", "Z >= 0.05")) << mpa[0];
+  // The indices of the oils themselves load: seed 004's Z (0.62, 0.5685) and the S0 its
+  // coefficients give at 40 C, beta (T0 - 138) / (ln eta0 + 9.67) = 1.07 for SAE 40
+  // (VALIDATION.md section 1).
+  EXPECT_NO_THROW(Lubricant::FromString(std::string(kHead) + "[viscosity]\n"
+                                                             "model = \"roelands\"\n"
+                                                             "viscosity_pa_s = 0.1140574\n"
+                                                             "pressure_index = 0.62\n"
+                                                             "temperature_index = 1.07\n",
+                                        "lub.toml"));
+}
+
 TEST(LubricantFile, EveryProblemIsReportedAtOnce) {
   const std::string text =
       "name = \"oil\"\n"                               // 1
