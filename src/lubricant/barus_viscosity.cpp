@@ -1,6 +1,7 @@
 #include "tehl/lubricant/barus_viscosity.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "lubricant/law_check.hpp"
 
@@ -14,10 +15,14 @@ std::vector<InputProblem> BarusViscosity::Parameters::Validate() const {
   internal::RequireParameter(reference_temperature_k > 0, "reference_temperature_k",
                              reference_temperature_k, "must be > 0 [K]",
                              "an absolute temperature [K]", &bad);
-  internal::RequireParameter(
-      pressure_coefficient_per_pa >= 0 && pressure_coefficient_per_pa <= 1e-7,
-      "pressure_coefficient_per_pa", pressure_coefficient_per_pa, "out of range",
-      "alpha in [0, 1e-7] [1/Pa]", &bad);
+  // Mineral oils have alpha of 1e-8 ... 4e-8 1/Pa, often quoted as 10 ... 40 1/GPa: a value
+  // of 0.5 ... 100 is most likely in 1/GPa (K.L. Johnson, Contact Mechanics, 1985, Table 13.1).
+  const double a = pressure_coefficient_per_pa;
+  std::string allowed = "alpha in [0, 1e-7] [1/Pa]";
+  if (a >= 0.5 && a <= 100)
+    allowed += ": in 1/GPa? (" + Num(a) + " 1/GPa = " + Num(a * 1e-9) + " 1/Pa)";
+  internal::RequireParameter(a >= 0 && a <= 1e-7, "pressure_coefficient_per_pa", a, "out of range",
+                             allowed, &bad);
   internal::RequireParameter(
       temperature_coefficient_per_k >= 0 && temperature_coefficient_per_k <= 1,
       "temperature_coefficient_per_k", temperature_coefficient_per_k, "out of range",

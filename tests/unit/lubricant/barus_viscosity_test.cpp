@@ -65,5 +65,26 @@ TEST(BarusViscosity, RejectsNegativePressureCoefficient) {
   }
 }
 
+TEST(BarusViscosity, NamesACoefficientGivenInOneOverGigapascal) {
+  // 23.7 1/GPa, the SAE 40 of seed 004 (Table 2), written without the 1e-9.
+  try {
+    BarusViscosity({0.04, 313.15, 23.7, 0.0});
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.problems().size(), 1u);
+    EXPECT_NE(e.problems()[0].allowed.find("in 1/GPa? (23.7 1/GPa = 2.37e-08 1/Pa)"),
+              std::string::npos)
+        << e.problems()[0].allowed;
+  }
+  // A value beyond any unit slip gets no hint.
+  try {
+    BarusViscosity({0.04, 313.15, 1e3, 0.0});
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.problems().size(), 1u);
+    EXPECT_EQ(e.problems()[0].allowed.find("1/GPa"), std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace tehl
