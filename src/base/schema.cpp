@@ -1,5 +1,6 @@
 // Input schemas: key specifications, their text in messages and `--print-default`, and
-// number formatting (schema.hpp; reading a file against a schema is document.cpp).
+// number formatting (schema.hpp; reading a file against a schema is document.cpp and
+// document_reader.cpp).
 #include "base/schema.hpp"
 
 #include <algorithm>

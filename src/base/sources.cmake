@@ -5,5 +5,6 @@ list(APPEND TEHL_SOURCES
   src/base/number_text.cpp
   src/base/schema.cpp
   src/base/document.cpp
+  src/base/document_reader.cpp
   src/base/toml_guard.cpp
 )
