@@ -20,6 +20,7 @@ list(APPEND TEHL_SOURCES
   src/scene/mesh_cycle_scene.cpp
   src/scene/step_restart.cpp
   src/scene/study_case_text.cpp
+  src/scene/study_vary_reader.cpp
   src/scene/study_reader.cpp
   src/scene/study.cpp
   src/scene/study_index.cpp
