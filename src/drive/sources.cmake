@@ -11,6 +11,7 @@ list(APPEND TEHL_SOURCES
   src/drive/planet_design.cpp
   src/drive/dc_motor.cpp
   src/drive/motor_schema.cpp
+  src/drive/train_schema.cpp
   src/drive/train_reader.cpp
   src/drive/train_checks.cpp
 )
