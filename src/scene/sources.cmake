@@ -17,6 +17,7 @@ list(APPEND TEHL_SOURCES
   src/scene/checkpoint_codec.cpp
   src/scene/mesh_cycle_plan.cpp
   src/scene/profile_memory.cpp
+  src/scene/mesh_cycle_result.cpp
   src/scene/mesh_cycle_scene.cpp
   src/scene/step_restart.cpp
   src/scene/study_case_text.cpp
