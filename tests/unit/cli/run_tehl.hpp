@@ -35,7 +35,8 @@ inline std::string UniqueTempPath(const std::string& name) {
 
 // `args` is appended to the program path as shell words; paths must not contain quotes.
 inline RunResult RunTehl(const std::string& args) {
-  const std::string out = UniqueTempPath("stdout.txt"), err = UniqueTempPath("stderr.txt");
+  const ScratchDir dir("tehl");
+  const std::string out = dir.Path("stdout.txt"), err = dir.Path("stderr.txt");
   const std::string cmd =
       std::string("'") + TEHL_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "'";
   const int status = std::system(cmd.c_str());
@@ -48,8 +49,6 @@ inline RunResult RunTehl(const std::string& args) {
   }
   r.out = ReadAll(out);
   r.err = ReadAll(err);
-  std::remove(out.c_str());
-  std::remove(err.c_str());
   return r;
 }
 

@@ -6,21 +6,15 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "support/scratch_path.hpp"
 #include "tehl/ehl/elastic_deflection.hpp"
 
 namespace tehl {
 namespace {
-
-std::string TempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() /
-          (name + "." + std::to_string(static_cast<long>(getpid()))))
-      .string();
-}
 
 // FFTW_WISDOM_ONLY builds a plan only from wisdom: a null plan means FFTW has none for it.
 bool HasWisdomFor(int m) {
@@ -37,7 +31,8 @@ bool HasWisdomFor(int m) {
 // A measured deflection leaves its plans in the process's wisdom; written out, forgotten and
 // read back, the file supplies the plan of that size (and of no other).
 TEST(FftwWisdom, MeasuredPlansSurviveAnExportAndImport) {
-  const std::string path = TempPath("tehl_wisdom_test");
+  const testing::ScratchDir dir("tehl_wisdom");
+  const std::string path = dir.Path("wisdom");
   const int m = ElasticDeflection(257, 1e-6, 226.4e9, FftPlanEffort::kEstimate).fft_size();
   const int other = ElasticDeflection(513, 1e-6, 226.4e9, FftPlanEffort::kEstimate).fft_size();
   ASSERT_FALSE(HasWisdomFor(m));  // estimated plans leave no wisdom that measured ones use
@@ -54,18 +49,17 @@ TEST(FftwWisdom, MeasuredPlansSurviveAnExportAndImport) {
   ASSERT_TRUE(internal::ImportWisdom(path));
   EXPECT_TRUE(HasWisdomFor(m));
   EXPECT_FALSE(HasWisdomFor(other));
-  std::remove(path.c_str());
 }
 
 // A missing file or one that is not FFTW wisdom is refused, and leaves the wisdom as it was;
 // an export into a directory that does not exist fails without leaving a file.
 TEST(FftwWisdom, RefusesMissingAndForeignFiles) {
-  const std::string path = TempPath("tehl_wisdom_foreign");
+  const testing::ScratchDir dir("tehl_wisdom");
+  const std::string path = dir.Path("foreign");
   EXPECT_FALSE(internal::ImportWisdom(path));
   std::ofstream(path) << "[numerics]\ngrid_points = 513\n";
   EXPECT_FALSE(internal::ImportWisdom(path));
-  std::remove(path.c_str());
-  const std::string nowhere = TempPath("tehl_no_such_dir") + "/wisdom";
+  const std::string nowhere = dir.Path("no_such_dir/wisdom");
   EXPECT_FALSE(internal::ExportWisdom(nowhere));
   EXPECT_FALSE(std::filesystem::exists(nowhere));
 }
@@ -73,7 +67,8 @@ TEST(FftwWisdom, RefusesMissingAndForeignFiles) {
 // With TEHL_FFTW_WISDOM set, a measured deflection of a new size writes the file (its
 // planning measured new plans), which a later process imports before planning.
 TEST(FftwWisdom, TheEnvironmentVariableNamesTheFileWritten) {
-  const std::string path = TempPath("tehl_wisdom_env");
+  const testing::ScratchDir dir("tehl_wisdom");
+  const std::string path = dir.Path("env");
   ASSERT_EQ(setenv("TEHL_FFTW_WISDOM", path.c_str(), 1), 0);
   EXPECT_EQ(internal::WisdomFile(), path);
   int m = 0;
@@ -85,7 +80,6 @@ TEST(FftwWisdom, TheEnvironmentVariableNamesTheFileWritten) {
   fftw_forget_wisdom();
   EXPECT_TRUE(internal::ImportWisdom(path));
   EXPECT_TRUE(HasWisdomFor(m));
-  std::remove(path.c_str());
   unsetenv("TEHL_FFTW_WISDOM");
 }
 

@@ -22,7 +22,8 @@ std::string Contents(const std::string& path) {
 }
 
 TEST(WriteTextAtomically, ReplacesTheFileAndLeavesNoTemporaryFile) {
-  const std::string path = testing::ScratchPath("tehl_atomic", "sub/table.csv");
+  const testing::ScratchDir dir("tehl_atomic");
+  const std::string path = dir.Path("sub/table.csv");
   WriteTextAtomically(path, "old\n");
   WriteTextAtomically(path, "new\n");
   EXPECT_EQ(Contents(path), "new\n");
@@ -31,7 +32,8 @@ TEST(WriteTextAtomically, ReplacesTheFileAndLeavesNoTemporaryFile) {
 
 // A folder under the final name: the text is written, the rename fails.
 TEST(WriteTextAtomically, AFailedRenameIsAFilesystemErrorAndLeavesNoTemporaryFile) {
-  const std::string path = testing::ScratchPath("tehl_atomic", "index.csv");
+  const testing::ScratchDir dir("tehl_atomic");
+  const std::string path = dir.Path("index.csv");
   fs::create_directories(path + "/inside");
   try {
     WriteTextAtomically(path, "scene,status\n");
@@ -46,7 +48,8 @@ TEST(WriteTextAtomically, AFailedRenameIsAFilesystemErrorAndLeavesNoTemporaryFil
 
 // A folder in the way of the temporary file: not written, and the folder is not ours to remove.
 TEST(WriteTextAtomically, AFailedWriteIsAFilesystemErrorAndKeepsAFolderInTheWay) {
-  const std::string path = testing::ScratchPath("tehl_atomic", "blocked.csv");
+  const testing::ScratchDir dir("tehl_atomic");
+  const std::string path = dir.Path("blocked.csv");
   fs::create_directories(path + ".part");
   try {
     WriteTextAtomically(path, "scene,status\n");

@@ -18,7 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(CsvTable, WritesHeaderAndRows) {
-  const std::string path = testing::ScratchPath("tehl_csv", "table.csv");
+  const testing::ScratchDir dir("tehl_csv");
+  const std::string path = dir.Path("table.csv");
   WriteCsvTable(path, {{"s_m", {0.0, 1e-3}}, {"h_c_m", {8e-7, 9e-7}}});
   std::ifstream in(path);
   std::string header, row1, row2;
@@ -35,7 +36,8 @@ TEST(CsvTable, WritesHeaderAndRows) {
 }
 
 TEST(CsvTable, NonFiniteValueIsRefusedAndNothingIsWritten) {
-  const std::string path = testing::ScratchPath("tehl_csv", "nan.csv");
+  const testing::ScratchDir dir("tehl_csv");
+  const std::string path = dir.Path("nan.csv");
   fs::remove(path);
   try {
     WriteCsvTable(path, {{"p_max_pa", {1.0, std::numeric_limits<double>::infinity()}}});
@@ -50,7 +52,8 @@ TEST(CsvTable, NonFiniteValueIsRefusedAndNothingIsWritten) {
 // error of the folder, not of tehl: std::filesystem::filesystem_error naming the path, which
 // the command line reports with exit code 2.
 TEST(CsvTable, AnUnwritablePathIsAFilesystemError) {
-  const std::string path = testing::ScratchPath("tehl_csv", "blocked.csv");
+  const testing::ScratchDir dir("tehl_csv");
+  const std::string path = dir.Path("blocked.csv");
   fs::create_directories(path + ".part");
   try {
     WriteCsvTable(path, {{"s_m", {0.0}}});

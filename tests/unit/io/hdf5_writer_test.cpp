@@ -20,12 +20,9 @@ using testing::Hdf5Exists;
 using testing::Hdf5StringAttribute;
 using testing::Hdf5Text;
 
-std::string TempFile(const std::string& name) {
-  return testing::ScratchPath("tehl_h5", name);
-}
-
 TEST(Hdf5Writer, WritesVectorsMatricesTextAndUnitsThatReadBack) {
-  const std::string path = TempFile("ok.h5");
+  const testing::ScratchDir dir("tehl_h5");
+  const std::string path = dir.Path("ok.h5");
   fs::remove(path);
   {
     Hdf5Writer w(path);
@@ -58,7 +55,8 @@ TEST(Hdf5Writer, WritesVectorsMatricesTextAndUnitsThatReadBack) {
 }
 
 TEST(Hdf5Writer, AbandonedWriterLeavesNoFile) {
-  const std::string path = TempFile("abandoned.h5");
+  const testing::ScratchDir dir("tehl_h5");
+  const std::string path = dir.Path("abandoned.h5");
   {
     Hdf5Writer w(path);
     w.WriteVector("/cycle/s", {0.0, 1.0}, "m", "s");
@@ -68,7 +66,8 @@ TEST(Hdf5Writer, AbandonedWriterLeavesNoFile) {
 }
 
 TEST(Hdf5Writer, RefusesNonFiniteValuesNamingTheDataset) {
-  const std::string path = TempFile("nan.h5");
+  const testing::ScratchDir dir("tehl_h5");
+  const std::string path = dir.Path("nan.h5");
   Hdf5Writer w(path);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
@@ -92,7 +91,8 @@ TEST(Hdf5Writer, RefusesNonFiniteValuesNamingTheDataset) {
 // error of the folder: std::filesystem::filesystem_error naming the path (exit code 2 on the
 // command line), not an internal error.
 TEST(Hdf5Writer, AFileThatCannotBeCreatedIsAFilesystemError) {
-  const std::string path = TempFile("blocked.h5");
+  const testing::ScratchDir dir("tehl_h5");
+  const std::string path = dir.Path("blocked.h5");
   fs::create_directories(path + ".part");
   try {
     Hdf5Writer w(path);
@@ -105,7 +105,8 @@ TEST(Hdf5Writer, AFileThatCannotBeCreatedIsAFilesystemError) {
 }
 
 TEST(Hdf5Writer, MismatchedMatrixShapeIsRefused) {
-  Hdf5Writer w(TempFile("shape.h5"));
+  const testing::ScratchDir dir("tehl_h5");
+  Hdf5Writer w(dir.Path("shape.h5"));
   EXPECT_THROW(w.WriteMatrix("/profiles/p", {1, 2, 3}, 2, 2, "Pa", "p"), std::runtime_error);
 }
 

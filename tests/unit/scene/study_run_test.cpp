@@ -16,11 +16,11 @@ namespace tehl {
 namespace {
 namespace fs = std::filesystem;
 
-// A contact study of `n` scenes whose case files do not exist: each scene fails at once.
-Study MissingScenes(int n) {
+// A contact study of `n` scenes in `dir` whose case files do not exist: each scene fails at once.
+Study MissingScenes(const testing::ScratchDir& dir, int n) {
   Study s;
   s.gear = false;
-  s.output_dir = testing::ScratchPath("tehl_study_run", "out");
+  s.output_dir = dir.Path("out");
   fs::create_directories(s.ScenesDir());
   for (int i = 0; i < n; ++i) {
     StudyScene sc;
@@ -33,7 +33,8 @@ Study MissingScenes(int n) {
 }
 
 TEST(RunStudyScenes, ASceneThatFailsIsARowAndTheOthersGoOn) {
-  const Study s = MissingScenes(3);
+  const testing::ScratchDir dir("tehl_study_run");
+  const Study s = MissingScenes(dir, 3);
   SweepOptions o;
   o.threads = 2;
   const std::vector<SceneRow> rows = RunStudyScenes(s, {0, 1, 2}, o);
@@ -45,7 +46,8 @@ TEST(RunStudyScenes, ASceneThatFailsIsARowAndTheOthersGoOn) {
 }
 
 TEST(RunStudyScenes, AnExceptionOfTheCallbackReachesTheCallerAfterTheThreadsAreJoined) {
-  const Study s = MissingScenes(4);
+  const testing::ScratchDir dir("tehl_study_run");
+  const Study s = MissingScenes(dir, 4);
   SweepOptions o;
   o.threads = 2;
   std::atomic<int> calls{0};
@@ -65,7 +67,8 @@ TEST(RunStudyScenes, AnExceptionOfTheCallbackReachesTheCallerAfterTheThreadsAreJ
 }
 
 TEST(RunStudyScenes, ASceneIdOutOfRangeIsAnErrorOfTheCaller) {
-  const Study s = MissingScenes(1);
+  const testing::ScratchDir dir("tehl_study_run");
+  const Study s = MissingScenes(dir, 1);
   SweepOptions o;
   o.threads = 2;
   EXPECT_THROW(RunStudyScenes(s, {7, 0}, o), std::out_of_range);
@@ -75,7 +78,8 @@ TEST(RunStudyScenes, ASceneIdOutOfRangeIsAnErrorOfTheCaller) {
 // A folder under the fingerprint's name: the scene runs (and fails here) without it, and its
 // temporary file goes.
 TEST(RunStudyScene, AFingerprintThatCannotBeKeptLeavesNoTemporaryFile) {
-  const Study s = MissingScenes(1);
+  const testing::ScratchDir dir("tehl_study_run");
+  const Study s = MissingScenes(dir, 1);
   const std::string fingerprint = s.ResultPath(s.scenes[0]) + ".case";
   fs::create_directories(fingerprint + "/inside");
   const SceneRow r = RunStudyScene(s, s.scenes[0], false);
