@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -58,6 +59,17 @@ FilmState State(double scale) {
   s.time_s = 2e-3 * scale;
   s.temperature.t_k = Eigen::MatrixXd::Constant(kNodes, kFilmNodes, 350 * scale);
   s.temperature.t1_k = Eigen::VectorXd::Constant(kNodes, 340 * scale);
+  // The solids' heat history: this level's travels, two earlier levels (the last steady).
+  s.temperature.travel1_m = 2e-5 * scale;
+  s.temperature.travel2_m = 3e-5 * scale;
+  for (double travel : {1e-5 * scale, std::numeric_limits<double>::infinity()}) {
+    SolidFluxLevel l;
+    l.q1_w_m2 = Eigen::VectorXd::LinSpaced(kNodes, 1e6, 2e7 * scale);
+    l.q2_w_m2 = Eigen::VectorXd::LinSpaced(kNodes, -1e6, 3e7 * scale);
+    l.travel1_m = travel;
+    l.travel2_m = 1.5 * travel;
+    s.temperature.earlier.push_back(l);
+  }
   return s;
 }
 
@@ -117,6 +129,18 @@ TEST(MeshCycleCheckpoint, CheckpointsInStepsReadBackTheWholeResult) {
   EXPECT_EQ(c->state.h0_m, State(1.5).h0_m);
   EXPECT_EQ(c->state.temperature.t_k, State(1.5).temperature.t_k);
   EXPECT_EQ(c->state.temperature.t1_k, State(1.5).temperature.t1_k);
+  EXPECT_EQ(c->state.temperature.travel1_m, State(1.5).temperature.travel1_m);
+  EXPECT_EQ(c->state.temperature.travel2_m, State(1.5).temperature.travel2_m);
+  ASSERT_EQ(c->state.temperature.earlier.size(), 2u);
+  const FilmState expected = State(1.5);
+  for (int j = 0; j < 2; ++j) {
+    const SolidFluxLevel &got = c->state.temperature.earlier[j],
+                         &want = expected.temperature.earlier[j];
+    EXPECT_EQ(got.q1_w_m2, want.q1_w_m2) << j;
+    EXPECT_EQ(got.q2_w_m2, want.q2_w_m2) << j;
+    EXPECT_EQ(got.travel1_m, want.travel1_m) << j;
+    EXPECT_EQ(got.travel2_m, want.travel2_m) << j;
+  }
   EXPECT_EQ(c->history.levels, 2);
   EXPECT_EQ(c->history.q2, History(2.5).q2);
   EXPECT_EQ(c->history.dt_prev_s, History(2.5).dt_prev_s);
