@@ -40,6 +40,8 @@ double FilmTemperature::MeanTemperature(int i) const {
 }
 
 bool FilmTemperature::Matches(int n, int nz) const {
+  for (const SolidFluxLevel& l : earlier)
+    if (l.q1_w_m2.size() != n || l.q2_w_m2.size() != n) return false;
   return t_k.rows() == n && t_k.cols() == nz && t1_k.size() == n && t2_k.size() == n &&
          q1_w_m2.size() == n && q2_w_m2.size() == n;
 }
@@ -239,7 +241,7 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
   // The solids' heat history (high-Peclet moving solids; finite-Peclet ones are quasi-steady).
   internal::StepHistory history;
   if (moving && transient && !options_.finite_peclet) {
-    history = internal::HistoryOfStep(grid_, *previous, flow.u1_m_s * dt_s, flow.u2_m_s * dt_s);
+    history = internal::HistoryOfStep(grid_, *previous, dt_s, flow.u1_m_s, flow.u2_m_s);
     if (history.active) {
       in.reach1_m = history.reach1_m;
       in.reach2_m = history.reach2_m;
@@ -360,9 +362,9 @@ FilmEnergySolver::Summary FilmEnergySolver::Solve(const FilmFlowField& flow,
   }
   s.krylov_iterations = system.krylov_iterations() - krylov_before;
   if (moving && transient && !options_.finite_peclet) {
-    internal::RememberLevels(grid_, *previous, flow.u1_m_s * dt_s, flow.u2_m_s * dt_s, t);
+    internal::RememberLevels(grid_, *previous, dt_s, flow.u1_m_s, flow.u2_m_s, t);
   } else {
-    internal::ForgetLevels(t);
+    internal::ForgetLevels(flow.u1_m_s, flow.u2_m_s, t);
   }
   if (s.iterations > 0) {
     s.balance = system.Balance(in, *t);

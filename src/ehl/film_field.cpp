@@ -24,6 +24,8 @@ void KeepWallFluxes(const FilmTemperature& from, FilmTemperature* to) {
   to->q2_w_m2 = from.q2_w_m2;
   to->travel1_m = from.travel1_m;
   to->travel2_m = from.travel2_m;
+  to->speed1_m_s = from.speed1_m_s;
+  to->speed2_m_s = from.speed2_m_s;
   to->earlier = from.earlier;
 }
 

@@ -18,10 +18,11 @@ double GridLength(const UniformGrid& g) { return (g.size() - 1) * g.dx_m(); }
 std::vector<FluxSpan> Spans(const FilmTemperature& previous, int s) {
   std::vector<FluxSpan> spans;
   spans.reserve(previous.earlier.size() + 1);
-  spans.push_back(s == 0 ? FluxSpan{&previous.q1_w_m2, previous.travel1_m}
-                         : FluxSpan{&previous.q2_w_m2, previous.travel2_m});
+  spans.push_back(s == 0 ? FluxSpan{&previous.q1_w_m2, previous.travel1_m, previous.speed1_m_s}
+                         : FluxSpan{&previous.q2_w_m2, previous.travel2_m, previous.speed2_m_s});
   for (const SolidFluxLevel& l : previous.earlier)
-    spans.push_back(s == 0 ? FluxSpan{&l.q1_w_m2, l.travel1_m} : FluxSpan{&l.q2_w_m2, l.travel2_m});
+    spans.push_back(s == 0 ? FluxSpan{&l.q1_w_m2, l.travel1_m, l.speed1_m_s}
+                           : FluxSpan{&l.q2_w_m2, l.travel2_m, l.speed2_m_s});
   return spans;
 }
 
@@ -29,28 +30,34 @@ std::vector<FluxSpan> Spans(const FilmTemperature& previous, int s) {
 
 StepHistory HistoryOfStep(const UniformGrid& grid,
                           const FilmTemperature& previous,
-                          double reach1_m,
-                          double reach2_m) {
+                          double dt_s,
+                          double u1_m_s,
+                          double u2_m_s) {
   StepHistory h;
+  const double reach1_m = u1_m_s * dt_s, reach2_m = u2_m_s * dt_s;
   const double length = GridLength(grid);
   if (reach1_m >= length && reach2_m >= length) return h;
   h.active = true;
   h.reach1_m = reach1_m;
   h.reach2_m = reach2_m;
   const MovingHeatSource source(grid);
-  h.history1 = source.History(reach1_m, Spans(previous, 0));
-  h.history2 = source.History(reach2_m, Spans(previous, 1));
+  h.history1 = source.History(reach1_m, u1_m_s, Spans(previous, 0));
+  h.history2 = source.History(reach2_m, u2_m_s, Spans(previous, 1));
   return h;
 }
 
 void RememberLevels(const UniformGrid& grid,
                     const FilmTemperature& previous,
-                    double reach1_m,
-                    double reach2_m,
+                    double dt_s,
+                    double u1_m_s,
+                    double u2_m_s,
                     FilmTemperature* t) {
   const double length = GridLength(grid);
+  const double reach1_m = u1_m_s * dt_s, reach2_m = u2_m_s * dt_s;
   t->travel1_m = reach1_m;
   t->travel2_m = reach2_m;
+  t->speed1_m_s = u1_m_s;
+  t->speed2_m_s = u2_m_s;
   std::vector<SolidFluxLevel> kept;
   // Lags at which each candidate level starts, seen from the level after t (at least).
   double start1 = reach1_m, start2 = reach2_m;
@@ -62,7 +69,7 @@ void RememberLevels(const UniformGrid& grid,
     return true;
   };
   if (keep(SolidFluxLevel{previous.q1_w_m2, previous.q2_w_m2, previous.travel1_m,
-                          previous.travel2_m}))
+                          previous.travel2_m, previous.speed1_m_s, previous.speed2_m_s}))
     for (const SolidFluxLevel& l : previous.earlier)
       if (!keep(l)) break;
   // Too many levels (very short steps): merge two neighbours of finite travel into one, each
@@ -90,19 +97,26 @@ void RememberLevels(const UniformGrid& grid,
     }
     SolidFluxLevel& a = kept[best];
     const SolidFluxLevel& b = kept[best + 1];
-    auto merge = [](Eigen::VectorXd* qa, double* la, const Eigen::VectorXd& qb, double lb) {
-      if (*la + lb > 0) *qa = (*qa * *la + qb * lb) / (*la + lb);
+    // The merged level lasts both durations l/u (its speed their travel over their time).
+    auto merge = [](Eigen::VectorXd* qa, double* la, double* ua, const Eigen::VectorXd& qb,
+                    double lb, double ub) {
+      if (*la + lb > 0) {
+        *qa = (*qa * *la + qb * lb) / (*la + lb);
+        if (*ua > 0 && ub > 0) *ua = (*la + lb) / (*la / *ua + lb / ub);
+      }
       *la += lb;
     };
-    merge(&a.q1_w_m2, &a.travel1_m, b.q1_w_m2, b.travel1_m);
-    merge(&a.q2_w_m2, &a.travel2_m, b.q2_w_m2, b.travel2_m);
+    merge(&a.q1_w_m2, &a.travel1_m, &a.speed1_m_s, b.q1_w_m2, b.travel1_m, b.speed1_m_s);
+    merge(&a.q2_w_m2, &a.travel2_m, &a.speed2_m_s, b.q2_w_m2, b.travel2_m, b.speed2_m_s);
     kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(best + 1));
   }
   t->earlier = std::move(kept);
 }
 
-void ForgetLevels(FilmTemperature* t) {
+void ForgetLevels(double u1_m_s, double u2_m_s, FilmTemperature* t) {
   t->travel1_m = t->travel2_m = std::numeric_limits<double>::infinity();
+  t->speed1_m_s = u1_m_s;
+  t->speed2_m_s = u2_m_s;
   t->earlier.clear();
 }
 

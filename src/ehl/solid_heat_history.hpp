@@ -18,26 +18,29 @@ struct StepHistory {
   Eigen::VectorXd history1, history2;                         // H_i of solids 1, 2 [W/m^2 m^(1/2)]
 };
 
-// The history of a step over the travels reach1_m = u1 dt, reach2_m = u2 dt (> 0) from the
-// level `previous` (its fluxes, travels and earlier levels; n values each). Inactive when
-// both reaches cover the grid (x_(n-1) - x_0): the step's own flux is then all a surface
-// point saw.
+// The history of a step of dt_s (> 0) at the surface speeds u1_m_s, u2_m_s (> 0) from the
+// level `previous` (its fluxes, travels, speeds and earlier levels; n values each). Inactive
+// when both reaches u dt cover the grid (x_(n-1) - x_0): the step's own flux is then all a
+// surface point saw.
 StepHistory HistoryOfStep(const UniformGrid& grid,
                           const FilmTemperature& previous,
-                          double reach1_m,
-                          double reach2_m);
+                          double dt_s,
+                          double u1_m_s,
+                          double u2_m_s);
 
-// Sets the travels and earlier levels of t, the level a step from `previous` solved: the
+// Sets the travels, speeds and earlier levels of t, the level a step of dt_s at the speeds
+// u1_m_s, u2_m_s from `previous` solved: the
 // previous level, then its earlier ones, as far back as a surface point on the grid can
 // remember (lags below x_(n-1) - x_0); at most kMaxSolidFluxLevels, the oldest two merged
 // (travel-weighted mean flux) beyond that.
 void RememberLevels(const UniformGrid& grid,
                     const FilmTemperature& previous,
-                    double reach1_m,
-                    double reach2_m,
+                    double dt_s,
+                    double u1_m_s,
+                    double u2_m_s,
                     FilmTemperature* t);
 
-// A steady level: infinite travels, no earlier levels.
-void ForgetLevels(FilmTemperature* t);
+// A steady level at the surface speeds u1_m_s, u2_m_s: infinite travels, no earlier levels.
+void ForgetLevels(double u1_m_s, double u2_m_s, FilmTemperature* t);
 
 }  // namespace tehl::internal

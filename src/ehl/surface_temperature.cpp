@@ -124,11 +124,15 @@ double MovingHeatSource::DecayRate(const SolidThermal& s, double speed_m_s) {
 }
 
 Eigen::VectorXd MovingHeatSource::History(double reach_m,
+                                          double speed_m_s,
                                           const std::vector<FluxSpan>& spans) const {
   ProblemList bad;
   if (!high_peclet() || !(reach_m > 0))
     bad.Add({"", 0, "reach_m", internal::FormatReal(reach_m), "must be > 0",
              "a travel u_s dt > 0 [m] (the history is of the high-Peclet form)"});
+  if (!(std::isfinite(speed_m_s) && speed_m_s > 0))
+    bad.Add({"", 0, "speed_m_s", internal::FormatReal(speed_m_s), "must be finite and > 0",
+             "the surface speed of the step [m/s]"});
   for (const FluxSpan& sp : spans) {
     if (!sp.q_w_m2 || sp.q_w_m2->size() != n_)
       bad.Add({"", 0, "FluxSpan::q_w_m2", sp.q_w_m2 ? std::to_string(sp.q_w_m2->size()) : "null",
@@ -136,39 +140,59 @@ Eigen::VectorXd MovingHeatSource::History(double reach_m,
     if (!(sp.travel_m >= 0))
       bad.Add({"", 0, "FluxSpan::travel_m", internal::FormatReal(sp.travel_m), "must be >= 0",
                "u_s dt [m], or infinity"});
+    if (!(std::isfinite(sp.speed_m_s) && sp.speed_m_s >= 0))
+      bad.Add({"", 0, "FluxSpan::speed_m_s", internal::FormatReal(sp.speed_m_s),
+               "must be finite and >= 0", "the level's surface speed [m/s], 0 = the step's"});
   }
   bad.ThrowIfAny();
   Eigen::VectorXd h = Eigen::VectorXd::Zero(n_);
   if (spans.empty()) return h;
-  // Span j covers the lags [edge[j], edge[j + 1]]; the last one has no upper edge.
+  // Span j covers the lags [edge[j], edge[j + 1]] (the last one has no upper edge). Its lag l
+  // was travelled at the span's own speed u_j, (l - edge[j]) / u_j after the time lag start[j]
+  // / u: measured in the step's speed u, at the lag start[j] + (l - edge[j]) u / u_j. The
+  // kernel is 1/sqrt of that time lag (in units of u): Duhamel's integral in time.
   const int m = static_cast<int>(spans.size());
-  std::vector<double> edge(m + 1);
-  edge[0] = reach_m;
-  for (int j = 0; j < m; ++j)
-    edge[j + 1] =
-        j + 1 == m ? std::numeric_limits<double>::infinity() : edge[j] + spans[j].travel_m;
-  // Whole interior cells inside one span take the kernel's own weights.
-  std::vector<double> whole(n_, 0.0);
-  for (int l = 1; l < n_; ++l) whole[l] = TwoRootDifference((l + 0.5) * dx_, (l - 0.5) * dx_);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::vector<double> edge(m + 1), start(m + 1), stretch(m);
+  edge[0] = start[0] = reach_m;
+  for (int j = 0; j < m; ++j) {
+    stretch[j] = spans[j].speed_m_s > 0 ? speed_m_s / spans[j].speed_m_s : 1.0;
+    const bool last = j + 1 == m;
+    edge[j + 1] = last ? kInf : edge[j] + spans[j].travel_m;
+    start[j + 1] = last ? kInf : start[j] + spans[j].travel_m * stretch[j];
+  }
+  // The pieces of the lags [lo, hi] in each span: (span, exact kernel integral) to `add`.
+  auto pieces = [&](double lo, double hi, auto&& add) {
+    lo = std::max(lo, reach_m);
+    if (!(lo < hi)) return;
+    int j = static_cast<int>(std::upper_bound(edge.begin() + 1, edge.end(), lo) - edge.begin()) - 1;
+    while (lo < hi) {
+      const double top = std::min(hi, edge[j + 1]);
+      auto time_lag = [&](double l) { return start[j] + (l - edge[j]) * stretch[j]; };
+      add(j, TwoRootDifference(time_lag(top), time_lag(lo)));
+      lo = top;
+      ++j;
+    }
+  };
+  // The cells of the nodes k >= 1 at lag d = i - k: [(d - 1/2) dx, (d + 1/2) dx], clipped at
+  // 0 for d = 0 (the outlet half cell too); computed once for every d.
+  std::vector<int> first(n_ + 1, 0), span_of;
+  std::vector<double> weight;
+  for (int d = 0; d < n_; ++d) {
+    first[d] = static_cast<int>(weight.size());
+    pieces(d == 0 ? 0.0 : (d - 0.5) * dx_, (d + 0.5) * dx_, [&](int j, double w) {
+      span_of.push_back(j);
+      weight.push_back(w);
+    });
+  }
+  first[n_] = static_cast<int>(weight.size());
   for (int i = 1; i < n_; ++i) {
     double sum = 0;
-    int j = 0;
-    // Cells from node i upstream: distances [lo, hi] from x_i grow as k falls.
-    for (int k = i; k >= 0; --k) {
-      const double hi = k == 0 ? i * dx_ : (i - k + 0.5) * dx_;
-      double lo = std::max(k == i ? 0.0 : (i - k - 0.5) * dx_, reach_m);
-      while (j + 1 < m && edge[j + 1] <= lo) ++j;
-      if (k > 0 && k < i && lo == (i - k - 0.5) * dx_ && hi <= edge[j + 1]) {
-        sum += (*spans[j].q_w_m2)[k] * whole[i - k];
-        continue;
-      }
-      while (lo < hi) {
-        while (j + 1 < m && edge[j + 1] <= lo) ++j;
-        const double top = std::min(hi, edge[j + 1]);
-        sum += (*spans[j].q_w_m2)[k] * TwoRootDifference(top, lo);
-        lo = top;
-      }
-    }
+    for (int d = 0; d < i; ++d)
+      for (int p = first[d]; p < first[d + 1]; ++p)
+        sum += weight[p] * (*spans[span_of[p]].q_w_m2)[i - d];
+    // The inlet half cell [x_0, x_0 + dx/2]: lags [(i - 1/2) dx, i dx].
+    pieces((i - 0.5) * dx_, i * dx_, [&](int j, double w) { sum += w * (*spans[j].q_w_m2)[0]; });
     h[i] = sum;
   }
   return h;

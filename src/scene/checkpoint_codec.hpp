@@ -17,7 +17,7 @@
 namespace tehl::internal::checkpoint_codec {
 
 // The last character of each magic is the format's version.
-inline constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', '9'};
+inline constexpr char kMagic[8] = {'T', 'E', 'H', 'L', 'C', 'K', 'P', 'A'};
 inline constexpr char kRowsMagic[8] = {'T', 'E', 'H', 'L', 'R', 'O', 'W', '5'};
 inline constexpr std::int64_t kRowsHeaderBytes = sizeof kRowsMagic + sizeof(std::uint64_t);
 inline constexpr std::uint64_t kChecksumBytes = sizeof(std::uint64_t);

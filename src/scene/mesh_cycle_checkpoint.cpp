@@ -106,14 +106,12 @@ void CheckpointWriter::Write(std::uint64_t fingerprint,
   o.M(t.t_k);
   for (const auto* v : {&t.t1_k, &t.t2_k, &t.q1_w_m2, &t.q2_w_m2}) o.V(*v);
   // The solids' heat history (infinite travels: a steady level).
-  o.F(t.travel1_m);
-  o.F(t.travel2_m);
+  for (double v : {t.travel1_m, t.travel2_m, t.speed1_m_s, t.speed2_m_s}) o.F(v);
   o.I(static_cast<std::int64_t>(t.earlier.size()));
   for (const SolidFluxLevel& l : t.earlier) {
     o.V(l.q1_w_m2);
     o.V(l.q2_w_m2);
-    o.F(l.travel1_m);
-    o.F(l.travel2_m);
+    for (double v : {l.travel1_m, l.travel2_m, l.speed1_m_s, l.speed2_m_s}) o.F(v);
   }
   o.I(history.levels);
   o.V(history.q1);

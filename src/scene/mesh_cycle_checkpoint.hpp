@@ -14,7 +14,7 @@
 // NAME.checkpoint ends with a 64-bit FNV-1a checksum of all its bytes before it, and records
 // the FNV-1a checksum of the committed journal, so a byte changed in either file (a disk or
 // copy error, an edit by hand) keeps the checkpoint from being used rather than giving a
-// wrong result. The magics end in the format's version (TEHLCKP9, TEHLROW5). Private to
+// wrong result. The magics end in the format's version (TEHLCKPA, TEHLROW5). Private to
 // src/scene.
 #pragma once
 

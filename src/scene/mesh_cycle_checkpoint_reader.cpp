@@ -55,16 +55,19 @@ void RequireFinite(const MeshCycleCheckpoint& c) {
   RequireFinite(t.t_k, "film temperature");
   for (const auto* v : {&t.t1_k, &t.t2_k, &t.q1_w_m2, &t.q2_w_m2})
     RequireFinite(*v, "surface temperature or heat flux");
-  auto require_travel = [](double v) {
-    if (!(v >= 0)) throw Unusable("it holds a negative or undefined travel of a heat-flux level");
+  // Travels >= 0 (infinite: a steady level), speeds finite and >= 0.
+  auto require_level = [](double travel1, double travel2, double speed1, double speed2) {
+    if (!(travel1 >= 0 && travel2 >= 0))
+      throw Unusable("it holds a negative or undefined travel of a heat-flux level");
+    RequireFinite(speed1, "surface speed of a heat-flux level");
+    RequireFinite(speed2, "surface speed of a heat-flux level");
+    if (speed1 < 0 || speed2 < 0) throw Unusable("it holds a negative surface speed");
   };
-  require_travel(t.travel1_m);
-  require_travel(t.travel2_m);
+  require_level(t.travel1_m, t.travel2_m, t.speed1_m_s, t.speed2_m_s);
   for (const SolidFluxLevel& l : t.earlier) {
     RequireFinite(l.q1_w_m2, "earlier heat flux");
     RequireFinite(l.q2_w_m2, "earlier heat flux");
-    require_travel(l.travel1_m);
-    require_travel(l.travel2_m);
+    require_level(l.travel1_m, l.travel2_m, l.speed1_m_s, l.speed2_m_s);
   }
   const LineContactSolver::TransientHistory& h = c.history;
   for (const auto* v : {&h.q1, &h.q2, &h.q3}) RequireFinite(*v, "transient history");
@@ -125,8 +128,7 @@ std::optional<MeshCycleCheckpoint> Read(const std::string& path) {
     FilmTemperature& t = s.temperature;
     t.t_k = in.M();
     for (auto* v : {&t.t1_k, &t.t2_k, &t.q1_w_m2, &t.q2_w_m2}) *v = in.E();
-    t.travel1_m = in.F();
-    t.travel2_m = in.F();
+    for (double* v : {&t.travel1_m, &t.travel2_m, &t.speed1_m_s, &t.speed2_m_s}) *v = in.F();
     const std::int64_t levels = in.I();
     if (levels < 0 || levels > kMaxSolidFluxLevels)
       throw Unusable("it holds " + std::to_string(levels) + " earlier heat-flux levels");
@@ -134,8 +136,7 @@ std::optional<MeshCycleCheckpoint> Read(const std::string& path) {
     for (SolidFluxLevel& l : t.earlier) {
       l.q1_w_m2 = in.E();
       l.q2_w_m2 = in.E();
-      l.travel1_m = in.F();
-      l.travel2_m = in.F();
+      for (double* v : {&l.travel1_m, &l.travel2_m, &l.speed1_m_s, &l.speed2_m_s}) *v = in.F();
     }
     c.history.levels = static_cast<int>(in.I());
     c.history.q1 = in.E();

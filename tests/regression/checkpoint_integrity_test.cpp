@@ -237,13 +237,13 @@ TEST(CheckpointIntegrity, ACheckpointOfAnotherVersionIsNamedSo) {
   {
     std::fstream f(path, std::ios::binary | std::ios::in | std::ios::out);
     f.seekp(7);
-    f.put('8');
+    f.put('9');
   }
   bool read = false;
   const std::string err = ReadReportingProblem(path, &read);
   EXPECT_FALSE(read);
-  EXPECT_NE(err.find("it was written by another version of tehl (format TEHLCKP8; "
-                     "this version reads TEHLCKP9)"),
+  EXPECT_NE(err.find("it was written by another version of tehl (format TEHLCKP9; "
+                     "this version reads TEHLCKPA)"),
             std::string::npos)
       << err;
 }

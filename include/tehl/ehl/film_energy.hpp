@@ -79,6 +79,8 @@ struct SolidFluxLevel {
   Eigen::VectorXd q2_w_m2;  // heat flux from the film into solid 2 [W/m^2]
   double travel1_m = 0;     // u1 dt of the level [m]; infinite for a steady level
   double travel2_m = 0;     // u2 dt of the level [m]; infinite for a steady level
+  double speed1_m_s = 0;    // u1 during the level [m/s]; 0: unknown (taken as the step's)
+  double speed2_m_s = 0;    // u2 during the level [m/s]; 0: unknown (taken as the step's)
 };
 
 // The most earlier levels a FilmTemperature keeps; shorter steps merge the oldest ones [-].
@@ -92,16 +94,18 @@ struct FilmTemperature {
   Eigen::VectorXd q1_w_m2;        // heat flux from the film into solid 1 [W/m^2]
   Eigen::VectorXd q2_w_m2;        // heat flux from the film into solid 2 [W/m^2]
   // The solids' heat history (transient steps with moving high-Peclet solids; docs/theory.md,
-  // "The solids' heat history"): how far the surfaces moved during this level (u dt), and the
-  // earlier levels, newest first, back to one transit of the grid. A steady level has
-  // infinite travels and no earlier levels (its flux had always acted), as has a level whose
-  // solids are quasi-steady (fixed walls, finite_peclet).
+  // "The solids' heat history"): how far and how fast the surfaces moved during this level
+  // (u dt, u), and the earlier levels, newest first, back to one transit of the grid. A steady
+  // level has infinite travels and no earlier levels (its flux had always acted), as has a
+  // level whose solids are quasi-steady (fixed walls, finite_peclet).
   double travel1_m = std::numeric_limits<double>::infinity();  // [m]
   double travel2_m = std::numeric_limits<double>::infinity();  // [m]
+  double speed1_m_s = 0;  // [m/s]; 0: unknown (a state not made by a solve)
+  double speed2_m_s = 0;  // [m/s]
   std::vector<SolidFluxLevel> earlier;
   double MaxTemperature() const;  // max over the film [K]
   double MeanTemperature(int i) const;  // cross-film mean at node i (trapezoidal in xi) [K]
-  bool Matches(int n, int nz) const;    // every field has the sizes of an n x nz film
+  bool Matches(int n, int nz) const;    // every field (the earlier levels' too) fits an n x nz film
 };
 
 // Energy budget of the film per unit face width [W/m]; generated = shear + compression.

@@ -59,6 +59,7 @@ struct FluxSpan {
   const Eigen::VectorXd* q_w_m2 = nullptr;  // the level's flux at the nodes [W/m^2]
   double travel_m = 0;  // how far the surface moved during the level (u_s dt) [m]; >= 0,
                         // infinite for a steady level (its flux had always acted)
+  double speed_m_s = 0;  // the surface's speed during the level [m/s]; 0: the step's own
 };
 
 // The moving-heat-source integral on a UniformGrid. Immutable; thread-safe to read.
@@ -97,14 +98,22 @@ class MovingHeatSource {
                        const Eigen::VectorXd& q_w_m2) const;
   // The cell length of node k: dx, dx/2 at both ends [m] (the cells the flux is constant on).
   double CellLength(int k) const;
-  // The earlier levels' part of the high-Peclet integral, beyond the lag reach_m (> 0):
-  //   H_i = sum_j integral over x' in cell k, l = x_i - x' in span j, of q_j(x') / sqrt(l),
-  // the spans following each other upstream from l = reach_m (span 0 the newest), the last
-  // one unbounded whatever its travel; each flux piecewise constant on the cells of its
-  // nodes; exact integrals of the kernel over the pieces [W/m^2 m^(1/2)]: T_s - T0 = F (sum
-  // of the Recent(reach_m) weights times the step's own flux + H). Zero without spans.
-  // O(n^2 + n spans). Throws InputError on a flux of the wrong size or a travel < 0.
-  Eigen::VectorXd History(double reach_m, const std::vector<FluxSpan>& spans) const;
+  // The earlier levels' part of the high-Peclet integral, beyond the lag reach_m (> 0) of a
+  // step at the surface speed speed_m_s (> 0): Duhamel's integral in time, written in lags
+  // at that speed,
+  //   H_i = sum_j integral over x' in cell k, l = x_i - x' in span j, of
+  //         q_j(x') / sqrt(tau_j(l)) dl (u / u_j),
+  // tau_j(l) = reach + u (time the surface took from x' to the start of the step's own
+  // travel), the spans following each other upstream from l = reach_m (span 0 the newest),
+  // the last one unbounded whatever its travel; a span of the step's speed u_j = u counts
+  // lags as they are. Each flux piecewise constant on the cells of its nodes; exact
+  // integrals of the kernel over the pieces [W/m^2 m^(1/2)]: T_s - T0 = F(u) (sum of the
+  // Recent(reach_m) weights times the step's own flux + H). Zero without spans.
+  // O(n^2 + n spans). Throws InputError on a flux of the wrong size, a travel < 0 or a speed
+  // <= 0.
+  Eigen::VectorXd History(double reach_m,
+                          double speed_m_s,
+                          const std::vector<FluxSpan>& spans) const;
 
  private:
   void FillHighPeclet();  // the weights of the high-Peclet form within reach_

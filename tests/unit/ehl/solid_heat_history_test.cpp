@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -60,7 +61,7 @@ TEST(SolidHeatHistory, RecentPlusASteadyHistoryIsTheSteadyIntegral) {
   const Eigen::VectorXd whole = Apply(MovingHeatSource(g), q);
   for (double reach : {0.3 * g.dx_m(), 2.7 * g.dx_m(), 40.0 * g.dx_m(), 1.0}) {
     const Eigen::VectorXd split = Apply(MovingHeatSource::Recent(g, reach), q) +
-                                  MovingHeatSource(g).History(reach, {FluxSpan{&q, kInf}});
+                                  MovingHeatSource(g).History(reach, 1.0, {FluxSpan{&q, kInf}});
     EXPECT_LT((split - whole).cwiseAbs().maxCoeff(), 1e-12 * whole.cwiseAbs().maxCoeff()) << reach;
   }
 }
@@ -71,7 +72,7 @@ TEST(SolidHeatHistory, FluxStoppedOneStepAgoDecaysAsOneDimensionalConduction) {
   const double q0 = 2.5e7;
   const Eigen::VectorXd q = Eigen::VectorXd::Constant(g.size(), q0);
   for (double r : {0.2 * g.dx_m(), 5.5 * g.dx_m()}) {
-    const Eigen::VectorXd h = MovingHeatSource(g).History(r, {FluxSpan{&q, kInf}});
+    const Eigen::VectorXd h = MovingHeatSource(g).History(r, 1.0, {FluxSpan{&q, kInf}});
     for (int i = 0; i < g.size(); ++i) {
       const double d = g.x(i) - g.x(0);
       const double expected = d > r ? 2 * q0 * (std::sqrt(d) - std::sqrt(r)) : 0.0;
@@ -91,7 +92,7 @@ TEST(SolidHeatHistory, SpansMatchAQuadratureOfDuhamelsIntegral) {
   const std::vector<double> travel = {2.2 * dx, 0.4 * dx, kInf};
   std::vector<FluxSpan> spans;
   for (int j = 0; j < 3; ++j) spans.push_back(FluxSpan{&q[j], travel[j]});
-  const Eigen::VectorXd h = MovingHeatSource(g).History(reach, spans);
+  const Eigen::VectorXd h = MovingHeatSource(g).History(reach, 1.0, spans);
   // Gauss-Legendre, 16 points on [-1, 1] (weights from the recurrence of the Legendre
   // polynomials, Newton on their roots).
   std::vector<double> gx(16), gw(16);
@@ -132,6 +133,88 @@ TEST(SolidHeatHistory, SpansMatchAQuadratureOfDuhamelsIntegral) {
   }
 }
 
+TEST(SolidHeatHistory, SpeedsThatChangeAreIntegratedInTime) {
+  // Duhamel's integral is one in time: theta = (1/sqrt(pi rho c k)) integral q(t') dt' /
+  // sqrt(t - t'), the flux being that of the place the surface point passed at t'. A step at
+  // u = 1 m/s after a level of 1.2 m/s (3.4 dx of travel) after a steady level at 0.8 m/s:
+  // follow each node's point back in time, cutting its path where it crosses a cell face or
+  // changes level; on each piece the flux is constant and integral dtau / sqrt(tau) =
+  // 2 (sqrt(tau_b) - sqrt(tau_a)). H must equal sqrt(u) times that sum (T - T0 = F(u) H).
+  const UniformGrid g = TestGrid(41);
+  const double dx = g.dx_m(), u = 1.0, dt = 0.7 * dx / u;
+  const Eigen::VectorXd qa = RandomFlux(g.size(), 11), qb = RandomFlux(g.size(), 12);
+  const double ua = 1.2, la = 3.4 * dx, ub = 0.8;
+  const Eigen::VectorXd h =
+      MovingHeatSource(g).History(u * dt, u, {FluxSpan{&qa, la, ua}, FluxSpan{&qb, kInf, ub}});
+  auto cell = [&](double x) {  // the node whose cell holds x
+    return std::clamp(static_cast<int>(std::floor((x - g.x(0)) / dx + 0.5)), 0, g.size() - 1);
+  };
+  for (int i = 1; i < g.size(); ++i) {
+    double sum = 0;
+    // Levels in time: [dt, dt + la/ua] at ua, then [dt + la/ua, inf) at ub.
+    struct Leg {
+      double t0, t1, x0, speed;
+      const Eigen::VectorXd* q;
+    };
+    const std::vector<Leg> legs = {{dt, dt + la / ua, g.x(i) - u * dt, ua, &qa},
+                                   {dt + la / ua, kInf, g.x(i) - u * dt - la, ub, &qb}};
+    for (const Leg& leg : legs) {
+      double tau = leg.t0, x = leg.x0;
+      while (tau < leg.t1 && x > g.x(0)) {
+        // Back to the next cell face below x (faces at x_k - dx/2), or the inlet end.
+        const int k = cell(x - 1e-12 * dx);
+        const double face = std::max(g.x(0), g.x(k) - 0.5 * dx);
+        const double t_next = std::min(leg.t1, tau + (x - face) / leg.speed);
+        sum += (*leg.q)[k] * 2 * (std::sqrt(t_next) - std::sqrt(tau));
+        x -= (t_next - tau) * leg.speed;
+        tau = t_next;
+      }
+    }
+    EXPECT_NEAR(h[i], std::sqrt(u) * sum, 1e-9 * 3e7 * std::sqrt(g.x(i) - g.x(0))) << i;
+  }
+  // The same spans at the step's speed are the lag integral of the first tests: with all
+  // speeds equal H does not depend on them.
+  const Eigen::VectorXd same =
+      MovingHeatSource(g).History(u * dt, u, {FluxSpan{&qa, la, u}, FluxSpan{&qb, kInf, u}});
+  const Eigen::VectorXd unknown =
+      MovingHeatSource(g).History(u * dt, u, {FluxSpan{&qa, la}, FluxSpan{&qb, kInf}});
+  EXPECT_EQ(same, unknown);
+}
+
+TEST(SolidHeatHistory, AChainOfStepsAfterAStoppedFluxMatchesTheClosedForm) {
+  // A uniform flux q0 steady at u0 = 1.2 m/s, then steps without flux at changing speeds and
+  // time steps, kept by RememberLevels. A point at d = x_i - x_0 was heated for t_h = (d -
+  // travel since the stop)/u0 and has cooled for t (the steps' total time): reference in the
+  // file comment, theta = 2 q0 [sqrt(t_h + t) - sqrt(t)] / sqrt(pi rho c k), i.e. H_i =
+  // 2 q0 sqrt(u) [sqrt(t_h + t) - sqrt(t)] at the last step's speed u (T - T0 = F(u) H).
+  const UniformGrid g = TestGrid(97);
+  const double q0 = 1e7, u0 = 1.2;
+  FilmTemperature t;
+  t.q1_w_m2 = t.q2_w_m2 = Eigen::VectorXd::Constant(g.size(), q0);
+  internal::ForgetLevels(u0, u0, &t);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(g.size());
+  double travel = 0, time = 0;
+  for (auto [dt, u] : {std::pair{7e-6, 1.1}, std::pair{13e-6, 1.0}, std::pair{20e-6, 0.9}}) {
+    FilmTemperature next;
+    next.q1_w_m2 = next.q2_w_m2 = zero;
+    internal::RememberLevels(g, t, dt, u, u, &next);
+    t = next;
+    travel += u * dt;
+    time += dt;
+  }
+  const double dt = 1e-5, u = 1.0;
+  travel += u * dt;
+  time += dt;
+  const internal::StepHistory h = internal::HistoryOfStep(g, t, dt, u, 0.5 * u);
+  ASSERT_TRUE(h.active);
+  for (int i = 0; i < g.size(); ++i) {
+    const double heated = std::max(0.0, (g.x(i) - g.x(0) - travel) / u0);
+    const double expected = 2 * q0 * std::sqrt(u) * (std::sqrt(heated + time) - std::sqrt(time));
+    EXPECT_NEAR(h.history1[i], expected, 1e-12 * 2 * q0 * std::sqrt(g.x(g.size() - 1) - g.x(0)))
+        << i;
+  }
+}
+
 TEST(SolidHeatHistory, LevelsAreKeptForOneTransitOfTheGridAndMergedWithinTheCap) {
   const UniformGrid g = TestGrid(33);
   const double length = g.x(g.size() - 1) - g.x(0), dx = g.dx_m();
@@ -145,7 +228,7 @@ TEST(SolidHeatHistory, LevelsAreKeptForOneTransitOfTheGridAndMergedWithinTheCap)
     FilmTemperature next;
     next.q1_w_m2 = Eigen::VectorXd::Constant(g.size(), step);
     next.q2_w_m2 = Eigen::VectorXd::Constant(g.size(), -step);
-    internal::RememberLevels(g, t, 3 * dx, dx, &next);
+    internal::RememberLevels(g, t, 1.0, 3 * dx, dx, &next);
     t = next;
   }
   EXPECT_EQ(t.travel1_m, 3 * dx);
@@ -166,7 +249,7 @@ TEST(SolidHeatHistory, LevelsAreKeptForOneTransitOfTheGridAndMergedWithinTheCap)
     FilmTemperature next;
     next.q1_w_m2 = Eigen::VectorXd::Constant(g.size(), 1e6 * (step + 1));
     next.q2_w_m2 = next.q1_w_m2;
-    internal::RememberLevels(g, t, 1e-3 * dx, 1e-3 * dx, &next);
+    internal::RememberLevels(g, t, 1e-3, dx, dx, &next);
     if (step + 1 < steps) flux_travel += 1e6 * (step + 1) * 1e-3 * dx;
     t = next;
   }
@@ -183,7 +266,7 @@ TEST(SolidHeatHistory, LevelsAreKeptForOneTransitOfTheGridAndMergedWithinTheCap)
   // The newest levels stay unmerged.
   EXPECT_EQ(t.earlier.front().travel1_m, 1e-3 * dx);
   // A steady solve forgets.
-  internal::ForgetLevels(&t);
+  internal::ForgetLevels(1.0, 1.0, &t);
   EXPECT_TRUE(t.earlier.empty());
   EXPECT_TRUE(std::isinf(t.travel1_m));
 }

@@ -62,12 +62,16 @@ FilmState State(double scale) {
   // The solids' heat history: this level's travels, two earlier levels (the last steady).
   s.temperature.travel1_m = 2e-5 * scale;
   s.temperature.travel2_m = 3e-5 * scale;
+  s.temperature.speed1_m_s = 1.1 * scale;
+  s.temperature.speed2_m_s = 0.9 * scale;
   for (double travel : {1e-5 * scale, std::numeric_limits<double>::infinity()}) {
     SolidFluxLevel l;
     l.q1_w_m2 = Eigen::VectorXd::LinSpaced(kNodes, 1e6, 2e7 * scale);
     l.q2_w_m2 = Eigen::VectorXd::LinSpaced(kNodes, -1e6, 3e7 * scale);
     l.travel1_m = travel;
     l.travel2_m = 1.5 * travel;
+    l.speed1_m_s = 1.2 * scale;
+    l.speed2_m_s = 0.8 * scale;
     s.temperature.earlier.push_back(l);
   }
   return s;
@@ -131,6 +135,8 @@ TEST(MeshCycleCheckpoint, CheckpointsInStepsReadBackTheWholeResult) {
   EXPECT_EQ(c->state.temperature.t1_k, State(1.5).temperature.t1_k);
   EXPECT_EQ(c->state.temperature.travel1_m, State(1.5).temperature.travel1_m);
   EXPECT_EQ(c->state.temperature.travel2_m, State(1.5).temperature.travel2_m);
+  EXPECT_EQ(c->state.temperature.speed1_m_s, State(1.5).temperature.speed1_m_s);
+  EXPECT_EQ(c->state.temperature.speed2_m_s, State(1.5).temperature.speed2_m_s);
   ASSERT_EQ(c->state.temperature.earlier.size(), 2u);
   const FilmState expected = State(1.5);
   for (int j = 0; j < 2; ++j) {
@@ -140,6 +146,8 @@ TEST(MeshCycleCheckpoint, CheckpointsInStepsReadBackTheWholeResult) {
     EXPECT_EQ(got.q2_w_m2, want.q2_w_m2) << j;
     EXPECT_EQ(got.travel1_m, want.travel1_m) << j;
     EXPECT_EQ(got.travel2_m, want.travel2_m) << j;
+    EXPECT_EQ(got.speed1_m_s, want.speed1_m_s) << j;
+    EXPECT_EQ(got.speed2_m_s, want.speed2_m_s) << j;
   }
   EXPECT_EQ(c->history.levels, 2);
   EXPECT_EQ(c->history.q2, History(2.5).q2);
