@@ -1,5 +1,6 @@
 #include "tehl/gear/geometry_checks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -195,11 +196,21 @@ class Checker {
       const double r_sap = std::hypot(l.pinion_base_radius_m, l.a_m);
       const double r_form = p.flank(f).form_radius_m;
       if (!p.flank(f).undercut && r_sap < r_form - 1e-9) {
+        // The wheel tip circle that crosses the line of action at the pinion's form circle,
+        // at the roll length rho_F = sqrt(r_F^2 - r_b1^2) from T1: A = T1T2 - sqrt(r_a2^2 -
+        // r_b2^2) for an external wheel, sqrt(r_a2^2 - r_b2^2) - T1T2 for a ring. A ring's tip
+        // must lie outside that circle (a shorter ring tooth), an external wheel's inside.
+        const double roll_form = std::sqrt(
+            std::max(0.0, r_form * r_form - l.pinion_base_radius_m * l.pinion_base_radius_m));
+        const double limit =
+            std::hypot(l.wheel_base_radius_m, s_.internal ? l.tangent_length_m + roll_form
+                                                          : l.tangent_length_m - roll_form);
         Error("gear.wheel", TipKey(1),
               "involute interference" + FlankLabel(f) +
                   ": the wheel tip meets the pinion at r = " + Mm(r_sap) +
                   ", below its involute form circle r_F = " + Mm(r_form) + " (in the root fillet)",
-              "a smaller wheel tip radius or a larger pinion profile_shift");
+              (s_.internal ? "a ring tip radius of at least " : "a wheel tip radius at most ") +
+                  Mm(limit) + " or a larger pinion profile_shift");
       }
     }
     if (s_.internal) return;  // the pinion tip meets the ring beyond T2 on the far side
@@ -220,7 +231,13 @@ class Checker {
               "involute interference" + FlankLabel(f) +
                   ": the pinion tip meets the wheel at r = " + Mm(r_sap) +
                   ", below its involute form circle r_F = " + Mm(r_form) + " (in the root fillet)",
-              "a smaller pinion tip radius or a larger wheel profile_shift");
+              "a pinion tip radius at most " +
+                  Mm(std::hypot(
+                      l.pinion_base_radius_m,
+                      l.tangent_length_m -
+                          std::sqrt(std::max(0.0, r_form * r_form - l.wheel_base_radius_m *
+                                                                        l.wheel_base_radius_m)))) +
+                  " or a larger wheel profile_shift");
       }
     }
   }

@@ -124,8 +124,35 @@ TEST(CheckGeometry, FilletInterferenceWhenTheMatingTipReachesBelowTheFormCircle)
   const GeometryProblem* p = f.Error("gear.wheel.tip_radius_m");
   ASSERT_TRUE(p) << f.All();
   EXPECT_TRUE(Mentions(p, "form circle r_F = 28.2301 mm")) << p->ToString();
+  // A ring's tip must be moved outwards (a shorter ring tooth): A = sqrt(r_a2^2 - r_b2^2) -
+  // T1T2 reaches the pinion's form circle at roll rho_F = 1.48947 mm (h_F0 = 0.99997 m), so
+  // r_a2 >= sqrt(84.57234^2 + (20.52121 + 1.48947)^2) = 87.3896 mm (hand calculation).
+  EXPECT_TRUE(Mentions(p, "a ring tip radius of at least 87.3896 mm")) << p->ToString();
+  EXPECT_FALSE(Mentions(p, "smaller")) << p->ToString();
+  s.wheel.tip_radius_m = 87.38e-3;
+  EXPECT_TRUE(Mentions(Check(s).Error("gear.wheel.tip_radius_m"), "form circle"));
+  s.wheel.tip_radius_m = 87.40e-3;
+  EXPECT_FALSE(Check(s).Error("gear.wheel.tip_radius_m", "form circle")) << Check(s).All();
   s.wheel.tip_radius_m = 88e-3;
   EXPECT_TRUE(Check(s).errors.empty()) << Check(s).All();
+}
+
+TEST(CheckGeometry, FilletInterferenceOfAnExternalPairNamesTheLargestTipRadius) {
+  // Seed 004 pair (VALIDATION.md section 5) with a long pinion tip, 37.9 mm: E = sqrt(37.9^2 -
+  // 32.88924^2) = 18.833 mm from T1 leaves 29.05 mm to T2, below the wheel's form-circle roll
+  // rho_F2 = 105 sin 20 - 0.99997 * 2 / sin 20 = 30.0643 mm (r_F2 = 103.1465 mm). Largest pinion
+  // tip: sqrt(32.88924^2 + (47.88282 - 30.0643)^2) = 37.4057 mm (hand calculation).
+  GearPairSpec s = Seed004Spec();
+  s.pinion.tip_radius_m = 37.9e-3;
+  const Found f = Check(s);
+  const GeometryProblem* p = f.Error("gear.pinion.tip_radius_m", "form circle");
+  ASSERT_TRUE(p) << f.All();
+  EXPECT_TRUE(Mentions(p, "r_F = 103.1465 mm")) << p->ToString();
+  EXPECT_TRUE(Mentions(p, "a pinion tip radius at most 37.4057 mm")) << p->ToString();
+  s.pinion.tip_radius_m = 37.41e-3;
+  EXPECT_TRUE(Check(s).Error("gear.pinion.tip_radius_m", "form circle")) << Check(s).All();
+  s.pinion.tip_radius_m = 37.40e-3;
+  EXPECT_FALSE(Check(s).Error("gear.pinion.tip_radius_m", "form circle")) << Check(s).All();
 }
 
 TEST(CheckGeometry, ImpossibleAndOverlappingCenterDistances) {
