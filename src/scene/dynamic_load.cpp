@@ -56,6 +56,17 @@ DynamicsCase ReadDynamicsCase(Document& doc, const GearCase& c) {
                      ? (pair.backlash_m() > 1e-12 ? pair.backlash_m() : 0.0) *  // 1 pm: rounding
                            std::cos(pair.line(Flank::kDrive).working_pressure_angle_rad)
                      : doc.Real("dynamics", "backlash_m");
+  // Along the line of action the backlash is the circumferential play on the working circle
+  // times cos(alpha_wt), below p_w cos(alpha_wt) = p_b even for teeth of no thickness: a
+  // value of a base pitch or more is no gear's, most likely millimetres written as metres.
+  const double pitch = pair.line(Flank::kDrive).base_pitch_m;
+  if (!d.backlash_from_geometry && p.backlash_m >= pitch)
+    doc.Problem("dynamics", "backlash_m",
+                "a backlash of " + FormatShort(p.backlash_m) +
+                    " m along the line of action is not below the base pitch p_b = " +
+                    FormatShort(pitch * 1e3) + " mm (a tooth space): in millimetres?",
+                "backlash_m < " + FormatShort(pitch) +
+                    " [m], in metres (0.1 mm = 1e-4; usually a few hundredths of the module)");
 
   // Corner contact is followed out to CornerMaxGap (gear_case.hpp; corner_contact.hpp).
   const bool corner = doc.Bool("dynamics", "corner_contact");

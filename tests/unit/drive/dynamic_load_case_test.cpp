@@ -168,8 +168,24 @@ TEST(DynamicsCase, RejectsBadValuesAtTheirLine) {
   ExpectProblem(Set(text, "damping_ratio", "1.5"), "dynamics.damping_ratio", "zeta");
   ExpectProblem(Set(text, "friction", "\"coulomb\""), "dynamics.friction", "law");
   ExpectProblem(Set(text, "backlash_m", "-1e-6"), "dynamics.backlash_m", "negative");
+  // 0.1 mm written as 0.1 m: no backlash along the line of action reaches the base pitch
+  // p_b = pi m cos(alpha) = 5.9043 mm of the seed 004 pair (VALIDATION.md section 5).
+  ExpectProblem(Set(text, "backlash_m", "0.1"), "dynamics.backlash_m", "millimetres");
+  ExpectProblem(Set(text, "backlash_m", "5.905e-3"), "dynamics.backlash_m", "pitch");
   ExpectProblem(text + "friction_coefficient = 0.1\n", "dynamics.friction_coefficient", "mu");
   ExpectProblem(text + "relative_tolerance = 0.01\n", "dynamics.relative_tolerance", "rtol");
+}
+
+TEST(DynamicsCase, BacklashBelowTheBasePitchIsAccepted) {
+  // Just below p_b = 5.9043 mm (VALIDATION.md section 5): accepted as given.
+  const std::string text = CaseText("seed004_sae40_dynamic");
+  internal::Document doc =
+      internal::ReadCaseDocument(WriteCase(Set(text, "backlash_m", "5.9e-3"), "wide_play"));
+  std::optional<internal::GearCase> c = internal::ReadGearCase(doc);
+  ASSERT_TRUE(c && c->pair);
+  const internal::DynamicsCase d = internal::ReadDynamicsCase(doc, *c);
+  for (const auto& p : doc.problems()) EXPECT_NE(p.key, "dynamics.backlash_m") << p.rule;
+  EXPECT_DOUBLE_EQ(d.params.backlash_m, 5.9e-3);
 }
 
 TEST(DynamicLoadEffect, RejectsACaseWhoseTeethUnloadAtItsSpeed) {
