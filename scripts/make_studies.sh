@@ -36,7 +36,8 @@ for name in "${studies[@]}"; do
   "$PY" scripts/plot_study.py "$OUT/$name/index.h5" -o "$OUT/$name/png" --prefix "$name" \
     --dpi 80 > "$OUT/$name/png.txt"
   cp "$OUT/$name/png/${name}_path.png" docs/studies/
-  for f in $(grep -v '_path' "$OUT/$name/png.txt"); do cp "$f" docs/studies/; done
+  # plot_study.py prints "wrote PATH" for each figure.
+  for f in $(sed -n 's/^wrote //p' "$OUT/$name/png.txt" | grep -v '_path'); do cp "$f" docs/studies/; done
   {
     echo "### $name"
     echo
