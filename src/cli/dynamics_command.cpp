@@ -4,6 +4,7 @@
 // along the path) and, with --speeds, the dynamic load factor against the pinion speed as a
 // CSV and a PNG (scripts/plot_dynamics.py).
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/number_format.hpp"
 #include "cli/python_script.hpp"
 #include "io/csv_table.hpp"
 #include "scene/case_reader.hpp"
@@ -42,6 +44,24 @@ std::vector<double> ParseSpeeds(const std::string& text) {
   std::vector<double> v;
   for (int i = 0; i < static_cast<int>(count); ++i) v.push_back(a + i * h);
   return v;
+}
+
+// The sweep's fastest speed within the pitch-line speeds a case accepts (kMaxPitchLineSpeed,
+// src/scene/gear_case.hpp): the same limit for both ways of giving a speed.
+void CheckSweepPitchLineSpeed(const std::string& text,
+                              const std::vector<double>& speeds_rpm,
+                              double pitch_radius_m) {
+  if (speeds_rpm.empty()) return;
+  const double top = *std::max_element(speeds_rpm.begin(), speeds_rpm.end());
+  const double per_rpm = RpmToRadPerS(1.0) * pitch_radius_m;
+  if (top * per_rpm <= internal::kMaxPitchLineSpeed) return;
+  throw InputError(InputProblem{
+      "", 0, "--speeds", "\"" + text + "\"",
+      "its fastest speed, " + cli::Fmt("%.0f", top) + " rpm, is a pitch-line speed of " +
+          cli::Fmt("%.1f", top * per_rpm) + " m/s, beyond the " +
+          cli::Fmt("%.0f", internal::kMaxPitchLineSpeed) + " m/s of gear drives",
+      "speeds up to " + cli::Fmt("%.0f", std::floor(internal::kMaxPitchLineSpeed / per_rpm)) +
+          " rpm for this pinion (the limit of [operating] pinion_speed_rpm)"});
 }
 
 int RunPlot(const std::string& csv, const std::string& png, const std::string& title) {
@@ -174,6 +194,7 @@ Command AddDynamicsCommand(CLI::App& app) {
         }
         const internal::DynamicsCase d = internal::ReadDynamicsCase(doc, *c);
         doc.ThrowIfProblems();
+        CheckSweepPitchLineSpeed(args->speeds, speeds, c->pair->pinion().pitch_radius_m);
         const std::unique_ptr<TorsionalMesh> mesh = internal::MakeTorsionalMesh(*c, d);
         TorsionalModel model(*mesh, d.params);
         const DynamicResponse r = SolvePeriodicResponse(model, d.options);

@@ -211,8 +211,9 @@ SectionSpec DynamicsSection() {
       false,
       {
           Real("damping_ratio", "-", "0.05",
-               "mesh damping ratio zeta, c = 2 zeta sqrt(k_mean m_e) (seed 000: 0.03 to 0.17)", 0.0,
-               1.0, true, false),
+               "mesh damping ratio zeta, c = 2 zeta sqrt(k_mean m_e) (seed 000: 0.03 to 0.17; "
+               "an undamped mesh has no periodic response to solve for)",
+               0.0, 1.0, false, false),
           Real("backlash_m", "m", "",
                "backlash along the line of action; absent = from the centre distance", 0.0),
           Flag("corner_contact", "true",

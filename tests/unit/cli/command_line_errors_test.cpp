@@ -148,6 +148,20 @@ TEST(CommandLineErrors, ADynamicsSweepOutsideGearSpeedsIsRefused) {
   }
 }
 
+// A sweep beyond the pitch-line speeds a case accepts (200 m/s) is refused as the case key is:
+// the seed 004 pinion (r = 35 mm, 35 teeth of 2 mm) reaches 200 m/s at 200 / (pi/30 * 0.035)
+// = 54567 rpm.
+TEST(CommandLineErrors, ADynamicsSweepBeyondTheCasesPitchLineSpeedIsRefused) {
+  const testing::RunResult r = testing::RunTehl(
+      "dynamics '" + SourcePath("cases/seed004_sae40_dynamic.toml") + "' --no-plot -o '" +
+      testing::UniqueTempPath("dyn") + "' --speeds 50000:100000:50000");
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--speeds"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("366.5 m/s"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("up to 54567 rpm"), std::string::npos) << r.err;
+}
+
 TEST(CommandLineErrors, ASpeedOfTheWrongTypeIsNotAlsoReportedMissing) {
   const std::string path = testing::UniqueTempPath("string_speed.toml");
   std::ofstream(path) << GearCase("pinion_speed_rpm = \"1000 rpm\"");
