@@ -6,6 +6,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/reynolds_system.cpp
   src/ehl/cross_film.cpp
   src/ehl/film_field.cpp
+  src/ehl/film_field_energy.cpp
   src/ehl/anderson_mixer.cpp
   src/ehl/eyring_wall_stress.cpp
   src/ehl/newton_system.cpp
