@@ -68,24 +68,6 @@ int RunPlot(const std::string& csv, const std::string& png, const std::string& t
   return RunPythonScript("tehl dynamics", "plot_dynamics.py", {csv, "-o", png, "--labels", title});
 }
 
-// The back flanks strike on the drive flanks' mesh (docs/dynamics.md, "Model"). With
-// asymmetric teeth they are the coast flanks, on base circles K = cos a_c / cos a_d times
-// larger and with their own stiffness and contact ratio, which the model does not carry.
-std::string AsymmetricBackFlankNote(const internal::GearCase& c) {
-  const GearPairSpec& s = c.spec;
-  if (s.coast_pressure_angle_rad == s.drive_pressure_angle_rad) return "";
-  char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "  note: asymmetric teeth strike their back flanks here: the model puts the "
-                "coast flanks (%.1f deg) on the drive flanks' line of action, base radii and "
-                "mesh stiffness (%.1f deg); their own base circles are K = %.4f times those and "
-                "their stiffness differs, so the back-flank forces and the load factor are "
-                "approximate (docs/dynamics.md)\n",
-                RadToDeg(s.coast_pressure_angle_rad), RadToDeg(s.drive_pressure_angle_rad),
-                std::cos(s.coast_pressure_angle_rad) / std::cos(s.drive_pressure_angle_rad));
-  return buf;
-}
-
 void Report(std::ostream& o,
             const internal::GearCase& c,
             const internal::DynamicsCase& d,
@@ -134,6 +116,18 @@ void Report(std::ostream& o,
                   60.0 * f_loaded / mesh.pinion_teeth());
     o << buf;
   }
+  if (const TorsionalMesh* back = mesh.back_flanks()) {
+    std::snprintf(buf, sizeof buf,
+                  "  back flanks (the coast flanks, %.1f deg): base circles K = %.4f times the "
+                  "drive flanks', mesh stiffness mean %.4g, min %.4g, max %.4g N/m, contact "
+                  "ratio %.4f, c = %.6g N s/m on their closure; their contacts run from E to A, "
+                  "at s_c / p_bc = %.4f - phi / p_b\n",
+                  RadToDeg(c.spec.coast_pressure_angle_rad), mesh.back_ratio(),
+                  back->mean_stiffness_n_per_m(), back->min_stiffness_n_per_m(),
+                  back->max_stiffness_n_per_m(), back->contact_ratio(), m.back_damping_n_s_per_m(),
+                  mesh.back_phase_offset());
+    o << buf;
+  }
   const TipRelief& relief = mesh.relief();
   if (relief.Active()) {
     std::snprintf(buf, sizeof buf,
@@ -156,7 +150,6 @@ void Report(std::ostream& o,
                 r.dynamic_load_factor, r.min_force_n, 100 * r.separated_fraction,
                 100 * r.back_flank_fraction);
   o << buf;
-  if (r.back_flank_fraction > 0) o << AsymmetricBackFlankNote(c);
 }
 
 }  // namespace
@@ -276,11 +269,6 @@ Command AddDynamicsCommand(CLI::App& app) {
             "periodic in one mesh period\nwrote %s\n",
             sweep.size(), sweep[peak].dynamic_load_factor, sweep[peak].pinion_speed_rpm,
             not_periodic, sweep_csv.c_str());
-        for (const SweepPoint& q : sweep)
-          if (q.back_flank_fraction > 0) {
-            std::printf("%s", AsymmetricBackFlankNote(*c).c_str());
-            break;
-          }
         if (args->no_plot) return kExitOk;
         const std::string png = (dir / (name + "_dynamics.png")).string();
         const int rc = RunPlot(sweep_csv, png, name);

@@ -110,6 +110,21 @@ void TorsionalMesh::Summarize() {
   }
 }
 
+void TorsionalMesh::SetBackFlanks(std::shared_ptr<const TorsionalMesh> back, double offset) {
+  back_ = std::move(back);
+  back_offset_ = offset - std::floor(offset);
+}
+
+double TorsionalMesh::BackPhase(double phase) const {
+  if (!back_) return phase;
+  const double q = back_offset_ - phase / base_pitch_m_;
+  return back_->base_pitch_m() * (q - std::floor(q));
+}
+
+double TorsionalMesh::back_ratio() const {
+  return back_ ? back_->pinion_base_radius_m() / rb1_m_ : 1.0;
+}
+
 int TorsionalMesh::SegmentAt(double phase) const {
   for (int i = 0; i < static_cast<int>(segments_.size()); ++i)
     if (phase < segments_[i].end_m) return i;

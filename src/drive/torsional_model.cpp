@@ -72,6 +72,12 @@ TorsionalModel::TorsionalModel(const TorsionalMesh& mesh, const TorsionalParamet
   const double j1 = p.pinion_inertia_kg_m2, j2 = p.wheel_inertia_kg_m2;
   m_e_ = j1 * j2 / (rb1 * rb1 * j2 + rb2 * rb2 * j1);
   c_ = 2.0 * p.damping_ratio * std::sqrt(mesh.mean_stiffness_n_per_m() * m_e_);
+  // The back flanks' damper acts on their own closure K (-(x + b)), whose equivalent mass is
+  // m_e / K^2, with their own mean stiffness (the same damping ratio).
+  const double k_ratio = mesh.back_ratio();
+  const TorsionalMesh& back = mesh.back_flanks() ? *mesh.back_flanks() : mesh;
+  c_back_ =
+      2.0 * p.damping_ratio * std::sqrt(back.mean_stiffness_n_per_m() * m_e_ / (k_ratio * k_ratio));
   f_static_ = p.pinion_torque_nm / rb1;
   torque_load_nm_ = p.pinion_torque_nm * rb2 / rb1;
 }
@@ -88,6 +94,17 @@ double TorsionalModel::PhaseAt(long period, double t) const {
   return contact_speed_m_s() * t - period * mesh_.base_pitch_m();
 }
 
+double TorsionalModel::BackFlankForce(
+    const TorsionalMesh& m, int seg, double phase, double x, double v) const {
+  // The back flanks close by d = K (-(x + b)) at the rate -K x' along their own line of
+  // action; they push and never pull, as the drive flanks (below). The force is returned
+  // with the sign of x: -F_c.
+  const double k_ratio = mesh_.back_ratio();
+  const double d = -k_ratio * (x + p_.backlash_m);
+  const double f = m.ElasticForce(seg, phase, d) - c_back_ * k_ratio * v;
+  return d > 0 ? -std::max(0.0, f) : -f;
+}
+
 double TorsionalModel::MeshForce(ContactState s, int seg, double phase, double x, double v) const {
   switch (s) {
     // Flanks in contact push and never pull: when the flanks part faster than the teeth
@@ -102,11 +119,10 @@ double TorsionalModel::MeshForce(ContactState s, int seg, double phase, double x
     case ContactState::kSeparated:
       return 0.0;
     case ContactState::kBackFlank: {
-      // The back flanks close by -(x + b) on the drive flanks' mesh, their tips relieved as
-      // the drive flanks' (a relief is cut on both flanks of a tooth): without relief
-      // k(t) (x + b).
-      const double f = -mesh_.ElasticForce(seg, phase, -(x + p_.backlash_m)) + c_ * v;
-      return x + p_.backlash_m < 0 ? std::min(0.0, f) : f;
+      const TorsionalMesh* back = mesh_.back_flanks();
+      if (!back) return BackFlankForce(mesh_, seg, phase, x, v);
+      const double q = mesh_.BackPhase(phase);
+      return BackFlankForce(*back, back->SegmentAt(q), q, x, v);
     }
   }
   return 0.0;
@@ -114,9 +130,13 @@ double TorsionalModel::MeshForce(ContactState s, int seg, double phase, double x
 
 double TorsionalModel::Acceleration(
     ContactState s, int seg, double phase, double x, double v) const {
+  return AccelerationWith(s, seg, phase, x, MeshForce(s, seg, phase, x, v));
+}
+
+double TorsionalModel::AccelerationWith(
+    ContactState s, int seg, double phase, double x, double f) const {
   const double rb1 = mesh_.pinion_base_radius_m(), rb2 = mesh_.wheel_base_radius_m();
   const double j1 = p_.pinion_inertia_kg_m2, j2 = p_.wheel_inertia_kg_m2;
-  const double f = MeshForce(s, seg, phase, x, v);
   double tf1 = 0, tf2 = 0;
   if (p_.friction != FrictionLaw::kNone && s == ContactState::kDriveFlank && f > 0) {
     const MeshSegment& m = mesh_.segments()[seg];
@@ -133,7 +153,10 @@ double TorsionalModel::Acceleration(
       tf2 += mu * fj * m.sliding[i] * rho2;
     }
   }
-  return rb1 * (p_.pinion_torque_nm - tf1) / j1 + rb2 * (torque_load_nm_ - tf2) / j2 - f / m_e_;
+  // A back-flank force acts on x through the coast base circles: K times.
+  const double arm = s == ContactState::kBackFlank ? mesh_.back_ratio() : 1.0;
+  return rb1 * (p_.pinion_torque_nm - tf1) / j1 + rb2 * (torque_load_nm_ - tf2) / j2 -
+         arm * f / m_e_;
 }
 
 void TorsionalModel::Reset(double t, double x, double v) {
@@ -148,7 +171,44 @@ void TorsionalModel::Reset(double t, double x, double v) {
   state_ = x > 0 ? ContactState::kDriveFlank
                  : (x >= -p_.backlash_m ? ContactState::kSeparated : ContactState::kBackFlank);
   if (x == 0 && v > 0) state_ = ContactState::kDriveFlank;
+  if (state_ == ContactState::kBackFlank) EnterBackFlanks(t);
   events_.clear();
+}
+
+// The back flanks' phase runs backwards: in periods, delta - c t / p_b, reduced by the
+// period count back_period_ (which grows as time goes on).
+double TorsionalModel::BackPhaseAt(double t) const {
+  const double q = mesh_.back_phase_offset() - contact_speed_m_s() * t / mesh_.base_pitch_m();
+  return mesh_.back_flanks()->base_pitch_m() * (q + back_period_);
+}
+
+void TorsionalModel::EnterBackFlanks(double t) {
+  const TorsionalMesh* back = mesh_.back_flanks();
+  if (!back) return;
+  const double pbc = back->base_pitch_m();
+  back_period_ = 0;
+  back_period_ = static_cast<long>(-std::floor(BackPhaseAt(t) / pbc));
+  double q = BackPhaseAt(t);
+  if (q <= 0) {  // on a period boundary, running backwards: the end of the next period
+    ++back_period_;
+    q += pbc;
+  }
+  // The segment begin < q <= end: the phase leaves it at its begin.
+  const auto& segs = back->segments();
+  back_segment_ = static_cast<int>(segs.size()) - 1;
+  for (int i = 0; i < static_cast<int>(segs.size()); ++i)
+    if (q <= segs[i].end_m) {
+      back_segment_ = i;
+      break;
+    }
+}
+
+double TorsionalModel::BackSegmentEndTime() const {
+  const TorsionalMesh& back = *mesh_.back_flanks();
+  const double begin = back.segments()[back_segment_].begin_m;
+  return mesh_.base_pitch_m() *
+         (mesh_.back_phase_offset() + back_period_ - begin / back.base_pitch_m()) /
+         contact_speed_m_s();
 }
 
 double TorsionalModel::ForceNow(double t, const double* y) const {
@@ -159,6 +219,15 @@ void TorsionalModel::Derivative(double t, const double* y, double* dydt) const {
   const MeshSegment& seg = mesh_.segments()[segment_];
   const double phase = std::clamp(PhaseAt(period_, t), seg.begin_m, seg.end_m);
   dydt[0] = y[1];
+  const TorsionalMesh* back = mesh_.back_flanks();
+  if (state_ == ContactState::kBackFlank && back) {
+    // In the mode's own segment of the back flanks' mesh, as the drive flanks' above.
+    const MeshSegment& b = back->segments()[back_segment_];
+    const double q = std::clamp(BackPhaseAt(t), b.begin_m, b.end_m);
+    const double f = BackFlankForce(*back, back_segment_, q, y[0], y[1]);
+    dydt[1] = AccelerationWith(state_, segment_, phase, y[0], f);
+    return;
+  }
   dydt[1] = Acceleration(state_, segment_, phase, y[0], y[1]);
 }
 
@@ -177,16 +246,35 @@ double TorsionalModel::Guard(int i, double, const double* y) const {
   return 1.0;
 }
 
-double TorsionalModel::NextScheduledTime(double) const {
+double TorsionalModel::DriveSegmentEndTime() const {
   const double end = period_ * mesh_.base_pitch_m() + mesh_.segments()[segment_].end_m;
   return end / contact_speed_m_s();
 }
 
+bool TorsionalModel::TracksBackFlanks() const {
+  return state_ == ContactState::kBackFlank && mesh_.back_flanks();
+}
+
+double TorsionalModel::NextScheduledTime(double) const {
+  const double drive = DriveSegmentEndTime();
+  return TracksBackFlanks() ? std::min(drive, BackSegmentEndTime()) : drive;
+}
+
 void TorsionalModel::Switch(int guard, double t, double* y) {
   if (guard < 0) {
-    if (++segment_ == static_cast<int>(mesh_.segments().size())) {
-      segment_ = 0;
-      ++period_;
+    // The drive flanks' segment ends, or (on the back flanks) the back flanks' one, or both.
+    const double tol = 1e-9 * mesh_period_s();
+    const double drive = DriveSegmentEndTime();
+    const bool back = TracksBackFlanks() && t >= BackSegmentEndTime() - tol;
+    if (!back || t >= drive - tol) {
+      if (++segment_ == static_cast<int>(mesh_.segments().size())) {
+        segment_ = 0;
+        ++period_;
+      }
+    }
+    if (back && --back_segment_ < 0) {
+      back_segment_ = static_cast<int>(mesh_.back_flanks()->segments().size()) - 1;
+      ++back_period_;
     }
     return;
   }
@@ -204,6 +292,7 @@ void TorsionalModel::Switch(int guard, double t, double* y) {
     state_ = ContactState::kBackFlank;
     y[0] = -p_.backlash_m;
   }
+  if (state_ == ContactState::kBackFlank) EnterBackFlanks(t);
   events_.push_back({t, from, state_});
 }
 

@@ -16,6 +16,7 @@ list(APPEND TEHL_SOURCES
   src/gear/load_sharing.cpp
   src/gear/tip_relief.cpp
   src/gear/corner_contact.cpp
+  src/gear/flank_phase.cpp
   src/gear/mesh_cycle.cpp
   src/gear/tooth_profile.cpp
   src/gear/tooth_blank.cpp

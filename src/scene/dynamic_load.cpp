@@ -6,6 +6,7 @@
 
 #include "base/schema.hpp"
 #include "tehl/error.hpp"
+#include "tehl/gear/flank_phase.hpp"
 #include "tehl/gear/load_sharing.hpp"
 #include "tehl/gear/operating_point.hpp"
 #include "tehl/gear/path_of_contact.hpp"
@@ -94,8 +95,23 @@ DynamicsCase ReadDynamicsCase(Document& doc, const GearCase& c) {
 }
 
 std::unique_ptr<TorsionalMesh> MakeTorsionalMesh(const GearCase& c, const DynamicsCase& d) {
-  return std::make_unique<TorsionalMesh>(*c.pair, c.pair_stiffness, 33, c.tip_relief,
-                                         d.corner_max_gap_m);
+  auto mesh = std::make_unique<TorsionalMesh>(*c.pair, c.pair_stiffness, 33, c.tip_relief,
+                                              d.corner_max_gap_m);
+  // The back flanks are the coast flanks (flank_phase.hpp): the drive mesh of the pair seen
+  // from its coast side, with the same relief and corner contact; for symmetric teeth that
+  // pair is this one, and so is its mesh.
+  std::shared_ptr<const TorsionalMesh> back;
+  const GearPairSpec& spec = c.pair->spec();
+  if (spec.coast_pressure_angle_rad == spec.drive_pressure_angle_rad) {
+    back = std::make_shared<const TorsionalMesh>(*mesh);
+  } else {
+    const GearPair coast(CoastSideSpec(spec));
+    std::shared_ptr<const PairStiffnessModel> owner;
+    const PairStiffnessFn k = MakePairStiffness(coast, c.mesh_stiffness, &owner);
+    back = std::make_shared<const TorsionalMesh>(coast, k, 33, c.tip_relief, d.corner_max_gap_m);
+  }
+  mesh->SetBackFlanks(std::move(back), CoastPhaseOffset(*c.pair));
+  return mesh;
 }
 
 DynamicLoad::DynamicLoad(const GearCase& c, const DynamicsCase& d)

@@ -17,6 +17,7 @@
 // after construction.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -107,6 +108,21 @@ class TorsionalMesh {
   double min_stiffness_n_per_m() const { return min_n_per_m_; }
   double max_stiffness_n_per_m() const { return max_n_per_m_; }
 
+  // The back flanks (docs/dynamics.md "Back flanks"): the mesh of the pair seen from its
+  // coast side (flank_phase.hpp: the drive mesh of GearPair(CoastSideSpec(spec)), same relief
+  // and corner contact), whose pairs sit at s_c = BackPhase(phi) + j p_bc when this mesh's
+  // sit at phi + j p_b: as phi runs forward, the back phase runs backwards. Without them the
+  // back flanks mesh on this mesh at its own phase (constant-stiffness limits and tests).
+  void SetBackFlanks(std::shared_ptr<const TorsionalMesh> back, double phase_offset);
+  const TorsionalMesh* back_flanks() const { return back_.get(); }
+  double back_phase_offset() const { return back_offset_; }  // delta [-], in [0, 1)
+  // Phase of the back flanks' mesh at this mesh's phase phi [m], in [0, p_bc):
+  // p_bc frac(delta - phi / p_b); this phase itself without back flanks.
+  double BackPhase(double phase_m) const;
+  // K = r_bc / r_bd: a back-flank force F_c acts on the drive coordinate x as K F_c, and the
+  // back flanks close by K (-(x + b)) [-]; 1 without back flanks.
+  double back_ratio() const;
+
  private:
   TorsionalMesh() = default;
   void BuildSegments(double s_pitch_m);
@@ -125,6 +141,8 @@ class TorsionalMesh {
   std::optional<CornerContact> corner_;
   double corner_before_m_ = 0, corner_after_m_ = 0;
   double mean_n_per_m_ = 0, min_n_per_m_ = 0, max_n_per_m_ = 0;
+  std::shared_ptr<const TorsionalMesh> back_;
+  double back_offset_ = 0;
 };
 
 }  // namespace tehl

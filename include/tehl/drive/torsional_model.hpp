@@ -17,7 +17,13 @@
 //   back flank (x < -b):      F = k(t) (x + b) + c x'
 // With tip relief (torsional_mesh.hpp) the elastic parts are sum_j k_j max(0, x - e_j) on the
 // drive flanks and -sum_j k_j max(0, -(x + b) - e_j) on the back flanks (both flanks of a
-// tooth relieved alike; the back flanks use the drive flanks' mesh, as k(t) above).
+// tooth relieved alike).
+// The back flanks are the coast flanks, with their own mesh when the mesh has one
+// (TorsionalMesh::back_flanks, flank_phase.hpp; docs/dynamics.md "Back flanks"): base
+// circles K = r_bc / r_bd times the drive flanks', closure d_c = K (-(x + b)), contact force
+// F_c = sum_j k_cj max(0, d_c - e_cj) - c_c K x' >= 0 at the back phase, acting on x as
+// K F_c: x'' = ... + K F_c / m_e, c_c = 2 zeta sqrt(k_c,mean m_e / K^2). MeshForce returns
+// -F_c in this state. Without back flanks of its own (K = 1) this is the line above.
 // Damping c = 2 zeta sqrt(k_mean m_e) (seed 000 eq. 4.9 with the period-mean stiffness and
 // the equivalent mass of the x coordinate; the printed eq. 4.9 swaps J1 and J2).
 // Friction: pair j carries F_j = F k_j / k_mesh; at its contact the friction force mu F_j
@@ -77,13 +83,16 @@ class TorsionalModel : public HybridOdeSystem {
   const TorsionalParameters& parameters() const { return p_; }
   double equivalent_mass_kg() const { return m_e_; }   // m_e [kg]
   double damping_n_s_per_m() const { return c_; }      // c [N s/m]
+  // The back flanks' damper on their own closure: 2 zeta sqrt(k_c,mean m_e / K^2) [N s/m].
+  double back_damping_n_s_per_m() const { return c_back_; }
   double static_force_n() const { return f_static_; }  // F_s = T_m / r_b1 [N]
   double natural_frequency_hz() const;                 // sqrt(k_mean/m_e)/(2 pi)
   double mesh_frequency_hz() const;                    // z1 w1 / (2 pi)
   double mesh_period_s() const;                        // p_b / (r_b1 w1)
   double contact_speed_m_s() const { return mesh_.pinion_base_radius_m() * p_.pinion_speed_rad_s; }
 
-  // Mesh force (eqs. 4.37-4.42) in a given state and segment at phase phi [N].
+  // Mesh force (eqs. 4.37-4.42) in a given state and segment at phase phi [N]: on the back
+  // flanks their contact force F_c with the sign of x (-F_c), which acts on x as K F_c.
   double MeshForce(ContactState state, int segment, double phase_m, double x_m, double v_m_s) const;
   // x'' in a given state and segment [m/s^2].
   double Acceleration(
@@ -97,6 +106,9 @@ class TorsionalModel : public HybridOdeSystem {
   ContactState state() const { return state_; }
   int segment() const { return segment_; }
   long period() const { return period_; }
+  // On the back flanks with their own mesh: its segment (the phase runs through them
+  // backwards, flank_phase.hpp).
+  int back_segment() const { return back_segment_; }
   double phase_m(double t_s) const { return PhaseAt(period_, t_s); }
   double ForceNow(double t_s, const double* y) const;  // MeshForce in the current mode
 
@@ -117,12 +129,27 @@ class TorsionalModel : public HybridOdeSystem {
   void Switch(int guard, double t, double* y) override;
 
  private:
+  double AccelerationWith(ContactState s, int segment, double phase_m, double x_m, double f) const;
+  // -F_c of the back flanks on mesh m (the back flanks' mesh, or the drive flanks' one
+  // without it) in its segment at its phase.
+  double BackFlankForce(
+      const TorsionalMesh& m, int segment, double phase_m, double x_m, double v_m_s) const;
+  // The back flanks' mode: their phase at t [m], the tracking from t on, and when their
+  // segment ends [s].
+  double BackPhaseAt(double t_s) const;
+  void EnterBackFlanks(double t_s);
+  double BackSegmentEndTime() const;
+  double DriveSegmentEndTime() const;
+  bool TracksBackFlanks() const;
+
   const TorsionalMesh& mesh_;
   TorsionalParameters p_;
-  double m_e_ = 0, c_ = 0, f_static_ = 0, torque_load_nm_ = 0;
+  double m_e_ = 0, c_ = 0, c_back_ = 0, f_static_ = 0, torque_load_nm_ = 0;
   ContactState state_ = ContactState::kDriveFlank;
   int segment_ = 0;
   long period_ = 0;
+  int back_segment_ = 0;  // segment of the back flanks' mesh (on the back flanks)
+  long back_period_ = 0;  // its period count
   std::vector<Event> events_;
 };
 

@@ -113,7 +113,8 @@ TEST(TipReliefDynamics, ALongReliefSizedForTheLoadMakesTheMeshForceConstant) {
 TEST(TipReliefDynamics, BackFlanksCarryTheirReliefAsTheDriveFlanks) {
   // A relief is cut on both flanks of a tooth: closing the back flanks by d = -(x + b) meets
   // the same gaps as closing the drive flanks by d, so the back-flank force is the drive-flank
-  // force with the sign turned (the back flanks use the drive flanks' mesh, as k(t) does).
+  // force with the sign turned (on a mesh without back flanks of its own, as here, the back
+  // flanks use the drive flanks' mesh, as k(t) does).
   // Without relief both are k(t) d, unchanged.
   testing::Seed000Dynamics d;
   const PairStiffnessFn k = AsPairStiffnessFn(*d.model);

@@ -1,0 +1,40 @@
+// What `tehl dynamics` reports of the back flanks: for asymmetric teeth the coast flanks'
+// own mesh (docs/dynamics.md, "Back flanks").
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <string>
+
+#include "run_tehl.hpp"
+#include "support/scratch_path.hpp"
+
+namespace tehl::testing {
+namespace {
+
+std::string Case(const std::string& name) {
+  return std::string(TEHL_SOURCE_DIR) + "/cases/" + name + ".toml";
+}
+
+TEST(DynamicsReport, AsymmetricTeethStrikeTheirCoastFlanksOnTheirOwnMesh) {
+  // cases/asymmetric_35_20.toml near its resonance strikes its back flanks. They are the
+  // coast flanks: K = cos 20 / cos 35 = 1.1472 (seed 000 eq. 3.23), and the case's coast
+  // contact ratio, from the gear core's coast line, is reported with them.
+  const ScratchDir dir("tehl_dyn_report");
+  const RunResult r = RunTehl("dynamics '" + Case("asymmetric_35_20") + "' --speeds 7400:7400:1 " +
+                              "--no-plot --threads 1 -o '" + dir.Path("out") + "'");
+  ASSERT_TRUE(r.exited && r.exit_code == 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("back flanks (the coast flanks, 20.0 deg): base circles K = 1.1472"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("approximate"), std::string::npos) << r.out;
+  const RunResult g = RunTehl("gear '" + Case("asymmetric_35_20") + "'");
+  ASSERT_TRUE(g.exited && g.exit_code == 0) << g.out << g.err;
+  std::smatch eps;
+  ASSERT_TRUE(std::regex_search(g.out, eps, std::regex("coast flank: .*eps_alpha = ([0-9.]+)")))
+      << g.out;
+  EXPECT_NE(r.out.find("contact ratio " + eps[1].str()), std::string::npos) << eps[1] << "\n"
+                                                                            << r.out;
+}
+
+}  // namespace
+}  // namespace tehl::testing
