@@ -1,5 +1,5 @@
-// LineContactSolver::Impl: the thermal / non-Newtonian coupling (the pressure/energy alternation,
-// Newton-Krylov on the coupling map, coupled grid sequencing) and the friction of the film.
+// LineContactSolver::Impl: the thermal / non-Newtonian coupling (the pressure/energy alternation
+// and coupled grid sequencing; Newton on the coupling map is line_contact_coupling_newton.cpp).
 
 #include <algorithm>
 #include <chrono>
@@ -22,11 +22,6 @@ namespace tehl {
 namespace {
 using internal::TimeDerivative;
 using Clock = std::chrono::steady_clock;
-// Newton on the thermal coupling: each map evaluation's energy solve tolerance and the
-// finite-difference step of its directional derivatives [K] (noise / step ~ 1e-4).
-constexpr double kCouplingMapToleranceK = 1e-5;
-constexpr double kCouplingFdStepK = 0.1;
-constexpr double kCouplingMapPressureTolerance = 1e-11;  // [-]
 // Coupled (thermal) grid sequencing stops at this many nodes [-].
 constexpr int kMinThermalCoarseNodes = 65;
 // Newton tolerance of the early thermal coupling iterations [-].
@@ -57,87 +52,6 @@ bool StillConverging(const std::vector<double>& change, double tolerance, int ca
   return n + kProgressWindow * windows <= cap;
 }
 }  // namespace
-
-FilmFriction LineContactSolver::Impl::Friction(const ContactConditions& c, const FilmState& st) {
-  // A state that is not a film of this grid (e.g. that of a first solve that failed) has no
-  // friction: NaN, never a read past its end.
-  if (st.p_pa.size() != grid_.size()) {
-    FilmFriction none;
-    none.coefficient = std::numeric_limits<double>::quiet_NaN();
-    return none;
-  }
-  FilmState s = st;
-  Film(c, &s);
-  if (field_) {
-    // The film's own Eyring factor (Begin alone would leave it half-way from 1, a shear
-    // stress near the geometric mean of the Newtonian and the Eyring one).
-    field_->Begin(c, st);
-    field_->UpdateRheology(c, s, 1.0);
-    return field_->Friction(c, s);
-  }
-  // Newtonian, isothermal: eta(p, T0) uniform across the film (two cross-film nodes).
-  return internal::IntegrateFriction(grid_, s, c, 2, [&](int i, double* eta) {
-    const double p = eff_.piezoviscous ? std::max(s.p_pa[i], 0.0) : 0.0;
-    eta[0] = eta[1] = lub_.viscosity().Evaluate(p, c.temperature_k).eta_pa_s;
-  });
-}
-
-LineContactSolver::Impl::CouplingNewton LineContactSolver::Impl::NewtonCoupling(
-    const ContactConditions& c,
-    const TimeDerivative& td,
-    const FilmState* previous,
-    double dt_s,
-    FilmState* s) {
-  CouplingNewton out;
-  const Eigen::Index m = field_->film_temperature().size();
-  const bool eyring = eff_.non_newtonian;
-  FilmState work = *s;
-  Eigen::MatrixXd image;
-  // G(x), x = (T[, w log f]): the pressure solved with the film at x; in Ree-Eyring runs the
-  // factor of that pressure at T (w log f') and the energy equation's temperature with it
-  // (T'): one alternation step without relaxation or mixing. The field is left at x.
-  const internal::FixedPointMap map = [&](const Eigen::VectorXd& x, Eigen::VectorXd* g) {
-    field_->SetCouplingState(x);
-    FilmState trial = work;
-    const double keep_tolerance = opt_.tolerance;
-    opt_.tolerance = std::min(opt_.tolerance, kCouplingMapPressureTolerance);
-    out.pressure = Solve(c, td, &trial);
-    opt_.tolerance = keep_tolerance;
-    if (!out.pressure.usable()) return false;
-    if (eyring) field_->UpdateRheology(c, trial, 1.0);
-    internal::FilmField::EnergyUpdate e;
-    try {
-      e = field_->MapTemperature(c, trial, previous, dt_s, kCouplingMapToleranceK, &image);
-    } catch (const std::exception&) {
-      e.ok = false;
-    }
-    if (e.ok) {
-      *g = field_->CouplingState();
-      g->head(m) = Eigen::Map<const Eigen::VectorXd>(image.data(), image.size());
-    }
-    field_->SetCouplingState(x);
-    if (!e.ok) return false;
-    out.balance = e.summary.balance.RelativeError();
-    work = trial;
-    return true;
-  };
-  internal::FixedPointNewtonOptions o;
-  o.tolerance = opt_.thermal_tolerance_k;
-  o.fd_step = kCouplingFdStepK;
-  field_->CouplingBounds(c.temperature_k, &o.lower_bounds, &o.upper_bounds);
-  Eigen::VectorXd x = field_->CouplingState();
-  out.result = internal::SolveFixedPoint(map, o, &x);
-  if (std::getenv("TEHL_DEBUG_COUPLING")) {
-    std::fprintf(stderr, "coupling Newton: %s, %d steps, %d GMRES, %d maps, residual %g K:",
-                 out.result.converged ? "converged" : "failed", out.result.newton_iterations,
-                 out.result.krylov_iterations, out.result.map_evaluations, out.result.residual);
-    for (double h : out.result.history) std::fprintf(stderr, " %g", h);
-    std::fprintf(stderr, " %s\n", out.result.message.c_str());
-  }
-  // The field holds x and `work` the pressure at x (the map was last evaluated there).
-  *s = work;
-  return out;
-}
 
 LineContactSolver::Summary LineContactSolver::Impl::SolveCoupled(const ContactConditions& c,
                                                                  const TimeDerivative& td,

@@ -1,8 +1,10 @@
 // The private implementation of LineContactSolver (include/tehl/ehl/line_contact_solver.hpp):
 // the member functions are defined by concept in line_contact_solver.cpp (construction, film),
 // line_contact_pressure.cpp (pressure Newton, continuation, grid sequencing),
-// line_contact_transient.cpp (time stepping) and line_contact_coupling.cpp (thermal coupling,
-// friction). Private to src/ehl.
+// line_contact_transient.cpp (time stepping), line_contact_coupling.cpp (the thermal coupling:
+// alternation and coupled grid sequencing), line_contact_coupling_newton.cpp (Newton-Krylov
+// on the coupling map) and line_contact_friction.cpp; the options, names and summary are in
+// line_contact_options.cpp. Private to src/ehl.
 #pragma once
 
 #include <Eigen/Core>

@@ -15,6 +15,7 @@ list(APPEND TEHL_SOURCES
   src/ehl/fixed_point_newton.cpp
   src/ehl/newton_krylov_solver.cpp
   src/ehl/reused_lu_solver.cpp
+  src/ehl/line_contact_options.cpp
   src/ehl/line_contact_solver.cpp
   src/ehl/line_contact_pressure.cpp
   src/ehl/line_contact_hints.cpp
@@ -22,6 +23,8 @@ list(APPEND TEHL_SOURCES
   src/ehl/line_contact_adaptive_step.cpp
   src/ehl/line_contact_transient.cpp
   src/ehl/line_contact_coupling.cpp
+  src/ehl/line_contact_coupling_newton.cpp
+  src/ehl/line_contact_friction.cpp
   src/ehl/elastic_deflection.cpp
   src/ehl/fftw_wisdom.cpp
   src/ehl/surface_roughness.cpp
