@@ -1,4 +1,5 @@
-// tehl dynamics CASE [--speeds FROM:TO:STEP] [-o DIR] [--threads N] [--no-plot]
+// tehl dynamics CASE [--speeds FROM:TO:STEP [--sweep-start static|up|down]] [-o DIR]
+//                    [--threads N] [--no-plot]
 // Torsional dynamics of the gear pair of a case (docs/dynamics.md): frequencies, the periodic
 // response at the case's speed (mesh force over a period, the tracked pair's dynamic load
 // along the path) and, with --speeds, the dynamic load factor against the pinion speed as a
@@ -20,6 +21,7 @@
 #include "scene/case_reader.hpp"
 #include "scene/dynamic_load.hpp"
 #include "scene/gear_case.hpp"
+#include "tehl/drive/dynamic_sweep.hpp"
 #include "tehl/error.hpp"
 #include "tehl/units.hpp"
 
@@ -156,7 +158,7 @@ void Report(std::ostream& o,
 
 Command AddDynamicsCommand(CLI::App& app) {
   struct Args {
-    std::string case_file, speeds, output_dir;
+    std::string case_file, speeds, output_dir, sweep_start = "static";
     int threads = 1;
     bool no_plot = false;
   };
@@ -170,6 +172,13 @@ Command AddDynamicsCommand(CLI::App& app) {
       sub->add_option("--speeds", args->speeds,
                       "Pinion speed sweep FROM:TO:STEP [rpm], e.g. 500:20000:100: writes "
                       "NAME_dynamics_sweep.csv and NAME_dynamics.png");
+  sub->add_option("--sweep-start", args->sweep_start,
+                  "How each speed of the sweep starts: static (from the static deflection, "
+                  "speeds in parallel), up or down (continuation: from FROM up or from TO down, "
+                  "each speed from the periodic response of the one before, following a branch "
+                  "through a jump)")
+      ->check(CLI::IsMember({"static", "up", "down"}))
+      ->needs(speeds_option);
   sub->add_option("-o,--output-dir", args->output_dir,
                   "Folder for the files (default: [output] directory of the case)");
   sub->add_option("--threads", args->threads, "Threads for the sweep")->check(CLI::Range(1, 256));
@@ -233,8 +242,11 @@ Command AddDynamicsCommand(CLI::App& app) {
         std::cout << o.str() << std::flush;
         if (speeds.empty()) return kExitOk;
 
+        const bool continuation = args->sweep_start != "static";
+        if (args->sweep_start == "down") std::reverse(speeds.begin(), speeds.end());
         const std::vector<SweepPoint> sweep =
-            SweepSpeeds(*mesh, d.params, speeds, d.options, args->threads);
+            SweepSpeeds(*mesh, d.params, speeds, d.options, args->threads,
+                        continuation ? SweepStart::kContinuation : SweepStart::kStatic);
         // The sweep holds the case's pinion torque (the power grows with the speed).
         std::vector<internal::CsvColumn> t(12);
         const char* th[] = {"pinion_speed_rpm",     "mesh_frequency_hz", "dynamic_load_factor",
@@ -259,18 +271,21 @@ Command AddDynamicsCommand(CLI::App& app) {
           for (int i = 0; i < 12; ++i) t[i].values.push_back(v[i]);
           not_periodic += !s.periodic;
         }
-        const std::string sweep_csv = (dir / (name + "_dynamics_sweep.csv")).string();
+        // Continuation sweeps keep their own files: up and down are compared with each other.
+        const std::string tag = continuation ? "_" + args->sweep_start : "";
+        const std::string sweep_csv = (dir / (name + "_dynamics_sweep" + tag + ".csv")).string();
         internal::WriteCsvTable(sweep_csv, t);
         size_t peak = 0;
         for (size_t i = 1; i < sweep.size(); ++i)
           if (sweep[i].dynamic_load_factor > sweep[peak].dynamic_load_factor) peak = i;
         std::printf(
-            "sweep: %zu speeds, largest dynamic load factor %.4f at %.1f rpm; %d not "
+            "sweep%s: %zu speeds, largest dynamic load factor %.4f at %.1f rpm; %d not "
             "periodic in one mesh period\nwrote %s\n",
-            sweep.size(), sweep[peak].dynamic_load_factor, sweep[peak].pinion_speed_rpm,
-            not_periodic, sweep_csv.c_str());
+            continuation ? (" (continuation " + args->sweep_start + ")").c_str() : "", sweep.size(),
+            sweep[peak].dynamic_load_factor, sweep[peak].pinion_speed_rpm, not_periodic,
+            sweep_csv.c_str());
         if (args->no_plot) return kExitOk;
-        const std::string png = (dir / (name + "_dynamics.png")).string();
+        const std::string png = (dir / (name + "_dynamics" + tag + ".png")).string();
         const int rc = RunPlot(sweep_csv, png, name);
         if (rc == kExitOk) std::printf("wrote %s\n", png.c_str());
         return rc;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <thread>
 
 #include "tehl/units.hpp"
 
@@ -25,6 +24,10 @@ std::vector<std::string> DynamicResponseOptions::Validate() const {
   rule(max_periods >= min_periods, "max_periods", max_periods, ">= min_periods");
   rule(output_samples >= 8, "output_samples", output_samples, ">= 8");
   rule(peak_samples_per_step >= 1, "peak_samples_per_step", peak_samples_per_step, ">= 1");
+  const bool finite = std::all_of(initial_state.begin(), initial_state.end(),
+                                  [](double v) { return std::isfinite(v); });
+  rule(initial_state.empty() || (initial_state.size() == 2 && finite), "initial_state size",
+       static_cast<double>(initial_state.size()), "0, or 2 finite values (x [m], x' [m/s])");
   return bad;
 }
 
@@ -98,6 +101,7 @@ DynamicResponse SolvePeriodicResponse(TorsionalModel& model, const DynamicRespon
   DormandPrince54 dp(io);
 
   std::vector<double> y = {r.static_force_n / mesh.MeshStiffness(0, 0.0), 0.0};
+  if (o.initial_state.size() == 2) y = o.initial_state;
   model.Reset(0.0, y[0], y[1]);
   std::vector<DynamicResponse::Step> current;
   const StepObserver observer = [&](const DenseStep& d) {
@@ -118,6 +122,8 @@ DynamicResponse SolvePeriodicResponse(TorsionalModel& model, const DynamicRespon
       r.message = "integrator: " + s.message;
       return r;
     }
+    r.end_x_m = y[0];
+    r.end_v_m_s = y[1];
     r.periodicity_error =
         std::max(std::abs(y[0] - y_prev[0]) / x_s, std::abs(y[1] - y_prev[1]) / (wn * x_s));
     if (r.periods >= o.min_periods && r.periodicity_error <= o.periodic_tolerance) {
@@ -204,47 +210,6 @@ std::vector<PairLoadPoint> TrackedPairLoad(const DynamicResponse& r, double b, i
     }
     out.push_back(p);
   }
-  return out;
-}
-
-std::vector<SweepPoint> SweepSpeeds(const TorsionalMesh& mesh,
-                                    const TorsionalParameters& p,
-                                    const std::vector<double>& speeds_rpm,
-                                    const DynamicResponseOptions& o,
-                                    int threads) {
-  std::vector<SweepPoint> out(speeds_rpm.size());
-  auto run = [&](size_t i) {
-    TorsionalParameters q = p;
-    q.pinion_speed_rad_s = RpmToRadPerS(speeds_rpm[i]);
-    TorsionalModel model(mesh, q);
-    const DynamicResponse r = SolvePeriodicResponse(model, o);
-    SweepPoint& s = out[i];
-    s.pinion_speed_rpm = speeds_rpm[i];
-    s.mesh_frequency_hz = r.mesh_frequency_hz;
-    s.dynamic_load_factor = r.dynamic_load_factor;
-    s.min_force_n = r.min_force_n;
-    s.separated_fraction = r.separated_fraction;
-    s.back_flank_fraction = r.back_flank_fraction;
-    s.periodic = r.periodic;
-    s.periods = r.periods;
-    double peak_dyn = 0, peak_static = 0;
-    for (const PairLoadPoint& l : TrackedPairLoad(r, 1.0, 201)) {
-      peak_dyn = std::max(peak_dyn, l.dynamic_n_per_m);
-      peak_static = std::max(peak_static, l.static_n_per_m);
-    }
-    s.pair_load_factor = peak_static > 0 ? peak_dyn / peak_static : 0.0;
-  };
-  threads = std::max(1, threads);
-  if (threads == 1) {
-    for (size_t i = 0; i < speeds_rpm.size(); ++i) run(i);
-    return out;
-  }
-  std::vector<std::thread> pool;
-  for (int w = 0; w < threads; ++w)
-    pool.emplace_back([&, w]() {
-      for (size_t i = w; i < speeds_rpm.size(); i += threads) run(i);
-    });
-  for (auto& t : pool) t.join();
   return out;
 }
 

@@ -4,6 +4,7 @@ list(APPEND TEHL_SOURCES
   src/drive/torsional_mesh.cpp
   src/drive/torsional_model.cpp
   src/drive/dynamic_response.cpp
+  src/drive/dynamic_sweep.cpp
   src/drive/gear_train.cpp
   src/drive/train_mesh_rows.cpp
   src/drive/gear_train_tabulation.cpp

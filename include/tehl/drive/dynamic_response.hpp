@@ -3,9 +3,9 @@
 // speed (seed 000 section 4.2.7 and Fig. 5.49; docs/dynamics.md).
 //
 // The model starts at t = 0 (tracked pair at A) from the static deflection x = F_s / k(0+),
-// x' = 0, and is integrated one mesh period T at a time by DormandPrince54 (events at contact
-// loss and regain, scheduled switches at the stiffness jumps and the pitch point) until the
-// state at the start of a period repeats the previous one:
+// x' = 0 (or a given state), and is integrated one mesh period T at a time by DormandPrince54
+// (events at contact loss and regain, scheduled switches at the stiffness jumps and the pitch
+// point) until the state at the start of a period repeats the previous one:
 //   |x_n - x_(n-1)| <= tol x_s  and  |x'_n - x'_(n-1)| <= tol w_n x_s,
 // x_s = F_s / k_mean the static deflection, w_n = sqrt(k_mean / m_e). The last period is then
 // the periodic response; every step of it is kept with its dense output, so the mesh force
@@ -29,6 +29,9 @@ struct DynamicResponseOptions {
   int max_periods = 5000;                     // periods integrated at most [-], >= min_periods
   int output_samples = 400;                   // uniform samples of the periodic response [-], >= 8
   int peak_samples_per_step = 8;              // dense-output points per step for the extremes [-]
+  // The state at t = 0 (phase 0): empty, the static deflection x = F_s / k(0+), x' = 0; or
+  // (x [m], x' [m/s]), e.g. the periodic response of a neighbouring speed (continuation).
+  std::vector<double> initial_state;
   std::vector<std::string> Validate() const;  // every violated rule; empty = valid
 };
 
@@ -58,6 +61,7 @@ struct DynamicResponse {
   double back_flank_fraction = 0;            // fraction of the period on the back flank [-]
   std::vector<double> contact_loss_times_s;  // drive-flank contact lost, from period start [s]
   double periodicity_error = 0;              // last value of the test above, relative [-]
+  double end_x_m = 0, end_v_m_s = 0;         // state at the end of the last period (phase 0)
   IntegratorSummary integrator;              // totals over all periods
   std::vector<DynamicSample> samples;        // output_samples + both sides of each segment end
 
@@ -94,24 +98,5 @@ struct PairLoadPoint {
 std::vector<PairLoadPoint> TrackedPairLoad(const DynamicResponse& r,
                                            double face_width_m,
                                            int points);
-
-// One point of a speed sweep.
-struct SweepPoint {
-  double pinion_speed_rpm = 0;     // [rpm]
-  double mesh_frequency_hz = 0;    // [Hz]
-  double dynamic_load_factor = 0;  // peak F / F_s [-]
-  double pair_load_factor = 0;     // peak tracked-pair load / peak static pair load [-]
-  double min_force_n = 0;          // [N]
-  double separated_fraction = 0;   // [-]
-  double back_flank_fraction = 0;  // [-]
-  bool periodic = false;
-  int periods = 0;
-};
-// Every speed with the parameters of `p` otherwise. Runs the speeds on `threads` threads.
-std::vector<SweepPoint> SweepSpeeds(const TorsionalMesh& mesh,
-                                    const TorsionalParameters& p,
-                                    const std::vector<double>& speeds_rpm,
-                                    const DynamicResponseOptions& o,
-                                    int threads = 1);
 
 }  // namespace tehl

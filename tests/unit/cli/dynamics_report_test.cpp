@@ -2,6 +2,7 @@
 // own mesh (docs/dynamics.md, "Back flanks").
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <regex>
 #include <string>
 
@@ -34,6 +35,24 @@ TEST(DynamicsReport, AsymmetricTeethStrikeTheirCoastFlanksOnTheirOwnMesh) {
       << g.out;
   EXPECT_NE(r.out.find("contact ratio " + eps[1].str()), std::string::npos) << eps[1] << "\n"
                                                                             << r.out;
+}
+
+TEST(DynamicsReport, ContinuationSweepsWriteTheirOwnTablesAndNeedSpeeds) {
+  const ScratchDir dir("tehl_dyn_report");
+  const std::string out = dir.Path("out");
+  const RunResult up =
+      RunTehl("dynamics '" + Case("seed004_sae40") +
+              "' --speeds 1000:3000:1000 --sweep-start up --no-plot -o '" + out + "'");
+  ASSERT_TRUE(up.exited && up.exit_code == 0) << up.out << up.err;
+  EXPECT_NE(up.out.find("sweep (continuation up): 3 speeds"), std::string::npos) << up.out;
+  EXPECT_TRUE(std::ifstream(out + "/seed004_sae40_dynamics_sweep_up.csv").good());
+  for (const std::string& bad : {std::string(" --sweep-start up"),
+                                 std::string(" --speeds 1000:2000:500 --sweep-start sideways")}) {
+    const RunResult r =
+        RunTehl("dynamics '" + Case("seed004_sae40") + "'" + bad + " --no-plot -o '" + out + "'");
+    EXPECT_TRUE(r.exited && r.exit_code == 2) << bad << "\n" << r.out << r.err;
+    EXPECT_NE(r.err.find("--sweep-start"), std::string::npos) << r.err;
+  }
 }
 
 }  // namespace

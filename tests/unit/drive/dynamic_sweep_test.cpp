@@ -1,6 +1,8 @@
 // Dynamic load factor against speed for the seed 000 pair: main resonance where the mesh
 // frequency meets the natural frequency, super-harmonic peaks below it, tooth separation
 // with light damping, and contact-loss times against an independent bisection reference.
+#include "tehl/drive/dynamic_sweep.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
