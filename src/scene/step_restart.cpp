@@ -1,5 +1,6 @@
 #include "scene/step_restart.hpp"
 
+#include <cmath>
 #include <optional>
 #include <utility>
 
@@ -12,6 +13,17 @@ void AddCost(const LineContactSolver::Summary& from, LineContactSolver::Summary*
   to->total_iterations += from.total_iterations;
   to->krylov_iterations += from.krylov_iterations;
   to->coupling_iterations += from.coupling_iterations;
+}
+
+// The row of a failed step holds the film the solver was left with (time stepping gives back
+// the film it started from, or the last substep it reached): its load error is that film's,
+// |integral p dx - w| / w against the step's load.
+void SetLoadErrorOfTheFilmLeft(const LineContactSolver& solver,
+                               const ContactConditions& c,
+                               const FilmState& s,
+                               LineContactSolver::Summary* sum) {
+  if (s.p_pa.size() != solver.grid().size() || !(c.load_n_per_m > 0)) return;
+  sum->load_error = std::abs(solver.grid().dx_m() * s.p_pa.sum() - c.load_n_per_m) / c.load_n_per_m;
 }
 
 }  // namespace
@@ -32,7 +44,11 @@ MarchedStep StepOrRestart(LineContactSolver& solver,
   const ContactConditions& c_prev = history.c_prev;  // the conditions before the step
   MarchedStep out;
   out.summary = solver.Step(c, dt_s, state, c_start);
-  if (out.summary.usable() || !steady_restart) return out;
+  if (out.summary.usable()) return out;
+  if (!steady_restart) {
+    SetLoadErrorOfTheFilmLeft(solver, c, *state, &out.summary);
+    return out;
+  }
   // The steady film at the step's time: its surfaces moved on as the step would have moved
   // them (rough surfaces are sampled at their travel; LineContactSolver::Step's trapezoid).
   FilmState steady = *before;
@@ -63,6 +79,7 @@ MarchedStep StepOrRestart(LineContactSolver& solver,
           ": " + sc.message + ")" +
           (skip ? "" : "; [numerics] failed_step = \"steady_restart_or_skip\" goes on past it");
       AddCost(sc, &out.summary);
+      SetLoadErrorOfTheFilmLeft(solver, c, *state, &out.summary);
       if (skip) {
         out.skipped = true;
         out.resume = std::move(*before);

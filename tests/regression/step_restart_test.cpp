@@ -233,6 +233,12 @@ TEST(StepRestart, SkippingLeavesAStepWhoseSteadyFilmFailsTooAndGoesOn) {
   EXPECT_NEAR(r.steps[3].h_c_m / r.steps[1].h_c_m, 1.0, 1e-9);
   EXPECT_NEAR(r.steps[4].p_max_pa / r.steps[1].p_max_pa, 1.0, 1e-9);
   EXPECT_EQ(r.steps[2].restart_reason, "");
+  // The failed row holds the film the step was left with: the solver's ladder of 1, 2 and 4
+  // substeps reached the first quarter of the 300-fold load rise, 1e5 + (3e7 - 1e5) / 4 =
+  // 7.575e6 N/m, and failed on the second. Its load error is that film's against the step's
+  // load, 1 - 7.575e6 / 3e7 = 0.7475 (a load error of 0 once said the row carried its load).
+  EXPECT_NEAR(r.steps[2].summary.load_error, 0.7475, 1e-4);
+  EXPECT_GT(r.steps[2].p_max_pa, 5 * r.steps[1].p_max_pa);  // not step 1's film
   // The steps CSV says which row failed.
   const auto cells = testing::ReadCsvCells(r.history_csv);
   ASSERT_EQ(cells.size(), 6u);
