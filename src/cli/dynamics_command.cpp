@@ -214,6 +214,11 @@ Command AddDynamicsCommand(CLI::App& app) {
           std::fprintf(stderr, "tehl dynamics: the integration failed: %s\n", r.message.c_str());
           return kExitNotConverged;
         }
+        if (r.diverged) {
+          std::cout << o.str();
+          std::fprintf(stderr, "tehl dynamics: at the case's speed %s\n", r.message.c_str());
+          return kExitNotConverged;
+        }
         std::vector<internal::CsvColumn> period(7);
         const char* ph[] = {"phase_m", "t_s", "x_m", "v_m_s", "force_n", "k_mesh_n_per_m", "state"};
         for (int i = 0; i < 7; ++i) period[i].header = ph[i];
@@ -248,13 +253,14 @@ Command AddDynamicsCommand(CLI::App& app) {
             SweepSpeeds(*mesh, d.params, speeds, d.options, args->threads,
                         continuation ? SweepStart::kContinuation : SweepStart::kStatic);
         // The sweep holds the case's pinion torque (the power grows with the speed).
-        std::vector<internal::CsvColumn> t(12);
-        const char* th[] = {"pinion_speed_rpm",     "mesh_frequency_hz", "dynamic_load_factor",
-                            "pair_load_factor",     "min_force_n",       "separated_fraction",
-                            "back_flank_fraction",  "periodic",          "periods",
-                            "natural_frequency_hz", "resonance_rpm",     "pinion_torque_nm"};
-        for (int i = 0; i < 12; ++i) t[i].header = th[i];
-        int not_periodic = 0;
+        std::vector<internal::CsvColumn> t(13);
+        const char* th[] = {
+            "pinion_speed_rpm", "mesh_frequency_hz",    "dynamic_load_factor", "pair_load_factor",
+            "min_force_n",      "separated_fraction",   "back_flank_fraction", "periodic",
+            "periods",          "natural_frequency_hz", "resonance_rpm",       "pinion_torque_nm",
+            "diverged"};
+        for (int i = 0; i < 13; ++i) t[i].header = th[i];
+        int not_periodic = 0, diverged = 0;
         for (const SweepPoint& s : sweep) {
           const double v[] = {s.pinion_speed_rpm,
                               s.mesh_frequency_hz,
@@ -267,23 +273,40 @@ Command AddDynamicsCommand(CLI::App& app) {
                               static_cast<double>(s.periods),
                               r.natural_frequency_hz,
                               60.0 * r.natural_frequency_hz / mesh->pinion_teeth(),
-                              d.params.pinion_torque_nm};
-          for (int i = 0; i < 12; ++i) t[i].values.push_back(v[i]);
+                              d.params.pinion_torque_nm,
+                              s.diverged ? 1.0 : 0.0};
+          for (int i = 0; i < 13; ++i) t[i].values.push_back(v[i]);
           not_periodic += !s.periodic;
+          diverged += s.diverged;
         }
         // Continuation sweeps keep their own files: up and down are compared with each other.
         const std::string tag = continuation ? "_" + args->sweep_start : "";
         const std::string sweep_csv = (dir / (name + "_dynamics_sweep" + tag + ".csv")).string();
         internal::WriteCsvTable(sweep_csv, t);
-        size_t peak = 0;
-        for (size_t i = 1; i < sweep.size(); ++i)
-          if (sweep[i].dynamic_load_factor > sweep[peak].dynamic_load_factor) peak = i;
-        std::printf(
-            "sweep%s: %zu speeds, largest dynamic load factor %.4f at %.1f rpm; %d not "
-            "periodic in one mesh period\nwrote %s\n",
-            continuation ? (" (continuation " + args->sweep_start + ")").c_str() : "", sweep.size(),
-            sweep[peak].dynamic_load_factor, sweep[peak].pinion_speed_rpm, not_periodic,
-            sweep_csv.c_str());
+        // The largest factor of the periodic responses: one that grows without bound has none.
+        size_t peak = sweep.size();
+        for (size_t i = 0; i < sweep.size(); ++i)
+          if (sweep[i].periodic && (peak == sweep.size() ||
+                                    sweep[i].dynamic_load_factor > sweep[peak].dynamic_load_factor))
+            peak = i;
+        const std::string largest =
+            peak < sweep.size()
+                ? "largest dynamic load factor " + Fmt("%.4f", sweep[peak].dynamic_load_factor) +
+                      " at " + Fmt("%.1f", sweep[peak].pinion_speed_rpm) + " rpm"
+                : std::string("no periodic response");
+        std::printf("sweep%s: %zu speeds, %s; %d not periodic in one mesh period\nwrote %s\n",
+                    continuation ? (" (continuation " + args->sweep_start + ")").c_str() : "",
+                    sweep.size(), largest.c_str(), not_periodic, sweep_csv.c_str());
+        if (diverged > 0) {
+          size_t first = 0;
+          while (!sweep[first].diverged) ++first;
+          std::printf(
+              "note: at %d speeds (the first %.1f rpm) the response grows without bound: "
+              "the mesh's stiffness variation pumps it (parametric instability; "
+              "docs/dynamics.md \"Back flanks\"); [dynamics] corner_contact = true or a "
+              "larger damping_ratio bounds it; the CSV's diverged column marks them\n",
+              diverged, sweep[first].pinion_speed_rpm);
+        }
         if (args->no_plot) return kExitOk;
         const std::string png = (dir / (name + "_dynamics" + tag + ".png")).string();
         const int rc = RunPlot(sweep_csv, png, name);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "tehl/units.hpp"
@@ -24,6 +25,7 @@ std::vector<std::string> DynamicResponseOptions::Validate() const {
   rule(max_periods >= min_periods, "max_periods", max_periods, ">= min_periods");
   rule(output_samples >= 8, "output_samples", output_samples, ">= 8");
   rule(peak_samples_per_step >= 1, "peak_samples_per_step", peak_samples_per_step, ">= 1");
+  rule(divergence_factor > 1, "divergence_factor", divergence_factor, "> 1");
   const bool finite = std::all_of(initial_state.begin(), initial_state.end(),
                                   [](double v) { return std::isfinite(v); });
   rule(initial_state.empty() || (initial_state.size() == 2 && finite), "initial_state size",
@@ -130,12 +132,26 @@ DynamicResponse SolvePeriodicResponse(TorsionalModel& model, const DynamicRespon
       r.periodic = true;
       break;
     }
+    if (std::abs(y[0]) > o.divergence_factor * x_s ||
+        std::abs(y[1]) > o.divergence_factor * wn * x_s) {
+      r.diverged = true;
+      break;
+    }
   }
   if (n == o.max_periods) n = o.max_periods - 1;
   r.message = r.periodic
                   ? "periodic after " + std::to_string(r.periods) + " mesh periods"
                   : "not periodic in one mesh period after " + std::to_string(r.periods) +
                         " periods (relative change " + std::to_string(r.periodicity_error) + ")";
+  if (r.diverged) {
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  "the response grows without bound: |x| = %.3g and |x'| / w_n = %.3g static "
+                  "deflections after %d mesh periods (the mesh's stiffness variation pumps "
+                  "it: parametric instability; corner contact or more damping bound it)",
+                  std::abs(y[0]) / x_s, std::abs(y[1]) / (wn * x_s), r.periods);
+    r.message = buf;
+  }
   r.steps = std::move(current);
   r.period_start_s = n * pb / cs;
 

@@ -25,7 +25,7 @@ std::vector<SweepPoint> SweepSpeeds(const TorsionalMesh& mesh,
     if (start == SweepStart::kContinuation && !carried.empty())
       oi.initial_state = {carried[0], carried[1] * speeds_rpm[i] / carried_rpm};
     const DynamicResponse r = SolvePeriodicResponse(model, oi);
-    if (start == SweepStart::kContinuation && r.integrator.usable()) {
+    if (start == SweepStart::kContinuation && r.periodic) {
       carried = {r.end_x_m, r.end_v_m_s};
       carried_rpm = speeds_rpm[i];
     }
@@ -37,6 +37,7 @@ std::vector<SweepPoint> SweepSpeeds(const TorsionalMesh& mesh,
     s.separated_fraction = r.separated_fraction;
     s.back_flank_fraction = r.back_flank_fraction;
     s.periodic = r.periodic;
+    s.diverged = r.diverged;
     s.periods = r.periods;
     double peak_dyn = 0, peak_static = 0;
     for (const PairLoadPoint& l : TrackedPairLoad(r, 1.0, 201)) {

@@ -12,6 +12,8 @@
 // can be evaluated at any phase on either side of a jump.
 // Responses that are not periodic in one mesh period (sub-harmonic or chaotic motion with
 // backlash) end after max_periods with periodic = false; their last period is reported.
+// Responses that grow without bound end once a period start lies beyond divergence_factor
+// static deflections, with diverged = true.
 #pragma once
 
 #include <string>
@@ -29,6 +31,10 @@ struct DynamicResponseOptions {
   int max_periods = 5000;                     // periods integrated at most [-], >= min_periods
   int output_samples = 400;                   // uniform samples of the periodic response [-], >= 8
   int peak_samples_per_step = 8;              // dense-output points per step for the extremes [-]
+  // A period start with |x| or |x'| / w_n beyond this many x_s: the response grows without
+  // bound (a mesh pumped by its own stiffness variation, docs/dynamics.md "Back flanks") and
+  // the integration stops there [-], > 1.
+  double divergence_factor = 1e3;
   // The state at t = 0 (phase 0): empty, the static deflection x = F_s / k(0+), x' = 0; or
   // (x [m], x' [m/s]), e.g. the periodic response of a neighbouring speed (continuation).
   std::vector<double> initial_state;
@@ -47,6 +53,7 @@ struct DynamicSample {
 
 struct DynamicResponse {
   bool periodic = false;  // the periodicity test passed
+  bool diverged = false;  // stopped: the response grows without bound (divergence_factor)
   int periods = 0;        // mesh periods integrated [-]
   std::string message;
   double pinion_speed_rad_s = 0;             // w1 [rad/s]

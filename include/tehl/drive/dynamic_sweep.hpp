@@ -2,7 +2,8 @@
 //
 // Each speed's periodic response (dynamic_response.hpp) starts either from the static
 // deflection (the default: every speed on its own, in parallel) or, by continuation, from the
-// periodic response of the speed before it in the order given: (x, x') at phase 0 with x'
+// periodic response of the speed before it in the order given (the last periodic one: a
+// speed whose response is not periodic hands on nothing): (x, x') at phase 0 with x'
 // scaled by the speed ratio (the orbit keeps its shape in the phase, dx/dphi, as the speed
 // changes a little). Where the response has two stable branches (a mesh that strikes its back
 // flanks or separates is a hardening or softening spring; the resonance jumps) continuation
@@ -26,6 +27,7 @@ struct SweepPoint {
   double separated_fraction = 0;   // [-]
   double back_flank_fraction = 0;  // [-]
   bool periodic = false;
+  bool diverged = false;  // the response grows without bound (dynamic_response.hpp)
   int periods = 0;
 };
 

@@ -55,5 +55,39 @@ TEST(DynamicsReport, ContinuationSweepsWriteTheirOwnTablesAndNeedSpeeds) {
   }
 }
 
+// cases/asymmetric_35_20.toml without corner contact: at zero backlash near its resonance the
+// response grows without bound (docs/dynamics.md "Back flanks"). The sweep says so and marks
+// those speeds, its largest load factor is that of a periodic response, and a case whose own
+// speed diverges fails (exit 1) naming it.
+TEST(DynamicsReport, AResponseGrowingWithoutBoundIsNamedAndLeftOutOfThePeak) {
+  const ScratchDir dir("tehl_dyn_report");
+  std::ifstream in(Case("asymmetric_35_20"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text = std::regex_replace(text, std::regex("name = \"sae40\""),
+                            "name = \"" TEHL_SOURCE_DIR "/lubricants/sae40.toml\"");
+  const std::string path = dir.Path("nocorner.toml");
+  std::ofstream(path) << text << "\n[dynamics]\ncorner_contact = false\n";
+  const std::string out = dir.Path("out");
+  const RunResult r =
+      RunTehl("dynamics '" + path + "' --speeds 6800:7100:100 --no-plot -o '" + out + "'");
+  ASSERT_TRUE(r.exited && r.exit_code == 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("the response grows without bound"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("largest dynamic load factor"), std::string::npos) << r.out;
+  std::ifstream csv(out + "/nocorner_dynamics_sweep.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_NE(header.find(",diverged"), std::string::npos) << header;
+
+  const std::string fast = dir.Path("nocorner_fast.toml");
+  std::ofstream(fast) << std::regex_replace(text, std::regex("pinion_speed_rpm = 1000.0"),
+                                            "pinion_speed_rpm = 7000.0")
+                      << "\n[dynamics]\ncorner_contact = false\n";
+  const RunResult f = RunTehl("dynamics '" + fast + "' --no-plot -o '" + out + "'");
+  ASSERT_TRUE(f.exited);
+  EXPECT_EQ(f.exit_code, 1) << f.out << f.err;
+  EXPECT_NE(f.err.find("at the case's speed the response grows without bound"), std::string::npos)
+      << f.err;
+}
+
 }  // namespace
 }  // namespace tehl::testing
