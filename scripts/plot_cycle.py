@@ -114,6 +114,11 @@ def main():
     except OSError as e:
         fail(f"-o/--output-dir {out}: cannot create the folder for the figures ({e.strerror})")
     failed = failed_steps(f)
+    if len(failed) == len(f["cycle/s"]):
+        term = f["solver/termination"][failed[0]].decode() if failed else "?"
+        print(f"plot_cycle.py: {a.result}: no step converged (step {failed[0] if failed else 0}: "
+              f"{term}): nothing to plot", file=sys.stderr)
+        sys.exit(4)  # tehl plot: exit 1, not converged
     if f.attrs.get("converged", "true") == "false":
         term = f["solver/termination"][:] if "solver/termination" in f else []
         where = f"step {failed[0]} ({term[failed[0]].decode()})" if failed else "a step"

@@ -51,8 +51,12 @@ int RunPythonScript(const std::string& command,
                  command.c_str(), python.c_str());
     return kExitBadInput;
   }
+  // The scripts say why they stop: 2 for input they cannot plot, 4 for a result with nothing
+  // converged to plot; anything else (1: an uncaught exception) is a failure of the script.
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 2) return kExitBadInput;
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 4) return kExitNotConverged;
   std::fprintf(stderr, "%s: the plot script failed\n", command.c_str());
-  return WIFEXITED(status) && WEXITSTATUS(status) == 2 ? kExitBadInput : kExitInternal;
+  return kExitInternal;
 }
 
 }  // namespace tehl::cli

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/number_format.hpp"
 #include "cli/run_notes.hpp"
 #include "scene/case_reader.hpp"
 #include "tehl/scene/contact_scene.hpp"
@@ -70,10 +71,16 @@ int RunGear(const RunArgs& a) {
   if (pitch_step < r.steps.size() && Usable(r, pitch_step) &&
       (passed_pitch || r.steps.size() == static_cast<size_t>(r.planned_steps) + 1)) {
     const MeshCycleStep& pitch = r.steps[pitch_step];
+    // The step nearest C, which lies between steps unless the step rule puts one on it.
+    const std::string where =
+        std::abs(pitch.s_m - r.s_c_m) <= 1e-9 * r.length_m
+            ? "at the pitch point (s = " + Fmt("%.4g", pitch.s_m * 1e3) + " mm)"
+            : "at the step nearest the pitch point (s = " + Fmt("%.4g", pitch.s_m * 1e3) +
+                  " mm; C at " + Fmt("%.4g", r.s_c_m * 1e3) + " mm)";
     std::printf(
-        "at the pitch point (s = %.4g mm): h_c = %.6g m, h_min = %.6g m, p_max = %.6g Pa "
-        "(Hertz p_H = %.4g Pa)\n",
-        pitch.s_m * 1e3, pitch.h_c_m, pitch.h_min_m, pitch.p_max_pa,
+        "%s: h_c = %.6g m, h_min = %.6g m, p_max = %.6g Pa (Hertz p_H = %.4g Pa at that "
+        "step)\n",
+        where.c_str(), pitch.h_c_m, pitch.h_min_m, pitch.p_max_pa,
         LineContactHertz(pitch.load_n_per_m, pitch.reduced_radius_m, r.e_prime_pa).max_pressure_pa);
   } else if (passed_pitch) {
     std::printf("the step at the pitch point (s = %.4g mm) did not converge\n", r.s_c_m * 1e3);

@@ -87,7 +87,11 @@ std::unique_ptr<Hdf5Writer> BeginMeshCycleHdf5(const std::string& path,
                                                const std::string& case_path) {
   auto h5 = std::make_unique<Hdf5Writer>(path);
   h5->SetAttribute("/", "program", "tehl 0.1.0");
-  h5->SetAttribute("/", "case_file", case_path);
+  {
+    std::error_code ec;  // absolute, as lubricant_file: the file is read from anywhere
+    const std::filesystem::path full = std::filesystem::absolute(case_path, ec);
+    h5->SetAttribute("/", "case_file", ec ? case_path : full.lexically_normal().string());
+  }
   h5->WriteText("/case", doc.ToToml(), "the case as run, defaults filled (TOML)");
   // The lubricant file as read, so that the result file alone reproduces the run.
   const std::string lubricant = ResolveLubricantPath(doc.String("lubricant", "name"), doc.path());
@@ -191,10 +195,11 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
   }
 
   std::vector<std::string> termination, message, restart_reason;
-  std::vector<int> iterations, substeps, restarted;
+  std::vector<int> iterations, substeps, restarted, converged;
   std::vector<double> residual, wall, load_error, time_error;
   for (const auto& k : r.steps) {
     termination.push_back(ToString(k.summary.termination));
+    converged.push_back(k.summary.usable() ? 1 : 0);
     message.push_back(k.summary.message);
     restarted.push_back(k.restarted() ? 1 : 0);
     restart_reason.push_back(k.restart_reason);
@@ -206,6 +211,8 @@ void FinishMeshCycleHdf5(Hdf5Writer& h5, const MeshCycleResult& r, bool profiles
     time_error.push_back(k.summary.time_error);
   }
   h5.WriteStrings("/solver/termination", termination, "how each step's solve ended");
+  h5.WriteInts("/solver/converged", converged,
+               "1: the step's film converged (a steady restart counts), 0: it did not");
   h5.WriteStrings("/solver/message", message, "the solver's summary message per step");
   h5.WriteInts("/solver/steady_restart", restarted,
                "1: the transient step failed and the film is the steady one at this point "

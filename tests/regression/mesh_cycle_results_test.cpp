@@ -253,8 +253,20 @@ TEST(MeshCycleResults, StoppedCycleReportsNoPitchPointValues) {
   EXPECT_NE(stdout_text.find("the cycle stopped before the pitch point"), std::string::npos)
       << stdout_text;
   EXPECT_EQ(stdout_text.find("at the pitch point ("), std::string::npos) << stdout_text;
+  EXPECT_EQ(stdout_text.find("nearest the pitch point"), std::string::npos) << stdout_text;
   EXPECT_NE(stderr_text.find("step 0 (s = 0 mm) did not converge"), std::string::npos)
       << stderr_text;
+  // Its result has no converged step: `tehl plot` says there is nothing to plot (exit 1, not
+  // converged) instead of drawing empty figures.
+  const std::string stem = fs::path(case_path).stem().string();
+  const std::string plot_err = dir + "/plot_stderr.txt";
+  const int plotted = std::system(("'" + std::string(TEHL_BINARY) + "' plot '" + dir + "/" + stem +
+                                   ".h5' -o '" + dir + "/png' >/dev/null 2>'" + plot_err + "'")
+                                      .c_str());
+  ASSERT_TRUE(WIFEXITED(plotted));
+  EXPECT_EQ(WEXITSTATUS(plotted), 1);
+  EXPECT_NE(ReadText(plot_err).find("nothing to plot"), std::string::npos) << ReadText(plot_err);
+  EXPECT_FALSE(fs::exists(dir + "/png/" + stem + "_cycle.png"));
 }
 
 TEST(MeshCycleResults, KilledRunLeavesNoFileUnderTheFinalName) {
