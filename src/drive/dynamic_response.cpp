@@ -68,7 +68,7 @@ DynamicSample DynamicResponse::SampleAt(double phase, bool left) const {
   s.x_m = y[0];
   s.v_m_s = y[1];
   s.state = st.state;
-  s.force_n = model->MeshForce(st.state, st.segment, ph, y[0], y[1]);
+  s.force_n = model->MeshForce(st.state, st.segment, st.back_segment, ph, y[0], y[1]);
   s.stiffness_n_per_m = model->mesh().MeshStiffness(st.segment, ph);
   return s;
 }
@@ -107,7 +107,10 @@ DynamicResponse SolvePeriodicResponse(TorsionalModel& model, const DynamicRespon
   model.Reset(0.0, y[0], y[1]);
   std::vector<DynamicResponse::Step> current;
   const StepObserver observer = [&](const DenseStep& d) {
-    current.push_back({d, model.state(), model.segment()});
+    current.push_back({d, model.state(), model.segment(),
+                       model.state() == ContactState::kBackFlank && model.mesh().back_flanks()
+                           ? model.back_segment()
+                           : -1});
     return true;
   };
   long n = 0;
@@ -169,7 +172,7 @@ DynamicResponse SolvePeriodicResponse(TorsionalModel& model, const DynamicRespon
       const double t = st.dense.t0_s + dt * k / o.peak_samples_per_step;
       st.dense.Evaluate(t, yv);
       const double ph = std::clamp(cs * t - n * pb, seg.begin_m, seg.end_m);
-      const double f = model.MeshForce(st.state, st.segment, ph, yv[0], yv[1]);
+      const double f = model.MeshForce(st.state, st.segment, st.back_segment, ph, yv[0], yv[1]);
       r.peak_force_n = std::max(r.peak_force_n, f);
       r.min_force_n = std::min(r.min_force_n, f);
     }

@@ -105,6 +105,20 @@ double TorsionalModel::BackFlankForce(
   return d > 0 ? -std::max(0.0, f) : -f;
 }
 
+double TorsionalModel::MeshForce(
+    ContactState s, int seg, int back_seg, double phase, double x, double v) const {
+  const TorsionalMesh* back = mesh_.back_flanks();
+  if (s != ContactState::kBackFlank || !back || back_seg < 0) return MeshForce(s, seg, phase, x, v);
+  const MeshSegment& b = back->segments()[back_seg];
+  // The reduced back phase may sit across the period wrap from the segment (a step ending at
+  // the wrap): take it on the segment's side before clamping.
+  const double pbc = back->base_pitch_m();
+  double q = mesh_.BackPhase(phase);
+  if (q > b.end_m + 0.5 * pbc) q -= pbc;
+  if (q < b.begin_m - 0.5 * pbc) q += pbc;
+  return BackFlankForce(*back, back_seg, std::clamp(q, b.begin_m, b.end_m), x, v);
+}
+
 double TorsionalModel::MeshForce(ContactState s, int seg, double phase, double x, double v) const {
   switch (s) {
     // Flanks in contact push and never pull: when the flanks part faster than the teeth

@@ -83,6 +83,7 @@ struct DynamicResponse {
     DenseStep dense;
     ContactState state = ContactState::kDriveFlank;
     int segment = 0;
+    int back_segment = -1;  // on the back flanks with their own mesh: its segment
   };
   std::vector<Step> steps;
   double period_start_s = 0;              // absolute time of the periodic period's start [s]

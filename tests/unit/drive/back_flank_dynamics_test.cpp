@@ -149,6 +149,13 @@ TEST(BackFlanks, TheModeTracksTheirSegmentsBackwards) {
     m.Derivative(mid, yy, d);
     EXPECT_NEAR(d[1], m.Acceleration(m.state(), m.segment(), phi, yy[0], yy[1]),
                 1e-9 * std::abs(d[1]));
+    // At the step's end, on a switch of either mesh, the step's own back segment gives the
+    // limit from inside the step: the force just before the end.
+    const double inside = m.MeshForce(m.state(), m.segment(), m.back_segment(),
+                                      m.phase_m(next - 1e-9 * (next - t)), yy[0], yy[1]);
+    const double at_end =
+        m.MeshForce(m.state(), m.segment(), m.back_segment(), m.phase_m(next), yy[0], yy[1]);
+    EXPECT_NEAR(at_end, inside, 1e-6 * std::abs(inside)) << "t " << next;
     const int before = m.back_segment();
     m.Switch(-1, next, yy);
     back_switches += m.back_segment() != before;
