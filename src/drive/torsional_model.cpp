@@ -144,28 +144,57 @@ double TorsionalModel::MeshForce(ContactState s, int seg, double phase, double x
 
 double TorsionalModel::Acceleration(
     ContactState s, int seg, double phase, double x, double v) const {
+  const TorsionalMesh* back = mesh_.back_flanks();
+  if (s == ContactState::kBackFlank && back) {
+    const double q = mesh_.BackPhase(phase);
+    const int bseg = back->SegmentAt(q);
+    return AccelerationWith(s, seg, phase, x, BackFlankForce(*back, bseg, q, x, v), bseg, q);
+  }
   return AccelerationWith(s, seg, phase, x, MeshForce(s, seg, phase, x, v));
 }
 
-double TorsionalModel::AccelerationWith(
-    ContactState s, int seg, double phase, double x, double f) const {
+void TorsionalModel::FrictionTorques(const TorsionalMesh& m,
+                                     int seg,
+                                     double phase,
+                                     double approach,
+                                     double force,
+                                     double* tf1,
+                                     double* tf2) const {
+  const MeshSegment& ms = m.segments()[seg];
+  const double w1 = p_.pinion_speed_rad_s;
+  const double w2 = w1 * m.pinion_teeth() / m.wheel_teeth();
+  for (size_t i = 0; i < ms.pairs.size(); ++i) {
+    const double sj = phase + ms.pairs[i] * m.base_pitch_m();
+    const double rho1 = m.Rho1(sj), rho2 = m.Rho2(sj);
+    const double mu = p_.friction == FrictionLaw::kConstant
+                          ? p_.friction_coefficient
+                          : BuckinghamFriction(w1 * rho1 - w2 * rho2);
+    const double fj = force * m.PairShare(seg, static_cast<int>(i), phase, approach);
+    *tf1 += mu * fj * ms.sliding[i] * rho1;
+    *tf2 += mu * fj * ms.sliding[i] * rho2;
+  }
+}
+
+double TorsionalModel::AccelerationWith(ContactState s,
+                                        int seg,
+                                        double phase,
+                                        double x,
+                                        double f,
+                                        int back_seg,
+                                        double back_phase) const {
   const double rb1 = mesh_.pinion_base_radius_m(), rb2 = mesh_.wheel_base_radius_m();
   const double j1 = p_.pinion_inertia_kg_m2, j2 = p_.wheel_inertia_kg_m2;
   double tf1 = 0, tf2 = 0;
-  if (p_.friction != FrictionLaw::kNone && s == ContactState::kDriveFlank && f > 0) {
-    const MeshSegment& m = mesh_.segments()[seg];
-    const double w1 = p_.pinion_speed_rad_s;
-    const double w2 = w1 * mesh_.pinion_teeth() / mesh_.wheel_teeth();
-    for (size_t i = 0; i < m.pairs.size(); ++i) {
-      const double sj = phase + m.pairs[i] * mesh_.base_pitch_m();
-      const double rho1 = mesh_.Rho1(sj), rho2 = mesh_.Rho2(sj);
-      const double mu = p_.friction == FrictionLaw::kConstant
-                            ? p_.friction_coefficient
-                            : BuckinghamFriction(w1 * rho1 - w2 * rho2);
-      const double fj = f * mesh_.PairShare(seg, static_cast<int>(i), phase, x);
-      tf1 += mu * fj * m.sliding[i] * rho1;
-      tf2 += mu * fj * m.sliding[i] * rho2;
-    }
+  if (p_.friction != FrictionLaw::kNone) {
+    if (s == ContactState::kDriveFlank && f > 0)
+      FrictionTorques(mesh_, seg, phase, x, f, &tf1, &tf2);
+    // The back flanks rub as the drive flanks do, on their own mesh: mirrored they are a
+    // drive mesh loaded forwards and turning backwards, and the two flips (mirror and
+    // reversed sliding) leave the drive flanks' torques T_f1, T_f2 with the back flanks' own
+    // pair loads, roll distances rho_1c, rho_2c and sliding signs (docs/dynamics.md).
+    if (s == ContactState::kBackFlank && f < 0 && back_seg >= 0 && mesh_.back_flanks())
+      FrictionTorques(*mesh_.back_flanks(), back_seg, back_phase,
+                      -mesh_.back_ratio() * (x + p_.backlash_m), -f, &tf1, &tf2);
   }
   // A back-flank force acts on x through the coast base circles: K times.
   const double arm = s == ContactState::kBackFlank ? mesh_.back_ratio() : 1.0;
@@ -239,7 +268,7 @@ void TorsionalModel::Derivative(double t, const double* y, double* dydt) const {
     const MeshSegment& b = back->segments()[back_segment_];
     const double q = std::clamp(BackPhaseAt(t), b.begin_m, b.end_m);
     const double f = BackFlankForce(*back, back_segment_, q, y[0], y[1]);
-    dydt[1] = AccelerationWith(state_, segment_, phase, y[0], f);
+    dydt[1] = AccelerationWith(state_, segment_, phase, y[0], f, back_segment_, q);
     return;
   }
   dydt[1] = Acceleration(state_, segment_, phase, y[0], y[1]);

@@ -30,7 +30,8 @@
 // opposes the sliding u1 - u2 and acts perpendicular to the line of action with arms rho1 and
 // rho2 about the two axes, so T_f1 = sum mu_j F_j sign(u1 - u2)_j rho1_j and T_f2 = sum
 // mu_j F_j sign(u1 - u2)_j rho2_j (seed 000 gives no arm; this is the usual one). Friction
-// acts on the drive flank only and only for F > 0.
+// acts where flanks carry load: on the drive flanks for F > 0, and on the back flanks with
+// their own mesh the same torques of their pairs (their F_cj, rho_1c, rho_2c, signs).
 // Buckingham's friction law, seed 000 eq. 4.10 with V in in/s, in SI (V in m/s, 1 in/s =
 // 0.0254 m/s): mu = 0.05 exp(-0.125 V/0.0254) + 0.002 sqrt(V/0.0254)
 //                 = 0.05 exp(-4.92126 V) + 0.0125491 sqrt(V).
@@ -137,7 +138,24 @@ class TorsionalModel : public HybridOdeSystem {
   void Switch(int guard, double t, double* y) override;
 
  private:
-  double AccelerationWith(ContactState s, int segment, double phase_m, double x_m, double f) const;
+  // x'' at the mesh force f; on the back flanks with their own mesh, in its segment
+  // back_segment at its phase back_phase_m (for their friction).
+  double AccelerationWith(ContactState s,
+                          int segment,
+                          double phase_m,
+                          double x_m,
+                          double f,
+                          int back_segment = -1,
+                          double back_phase_m = 0) const;
+  // Adds the friction torques T_f1, T_f2 [N m] of the pairs of mesh m in its segment at its
+  // phase, carrying `force` [N] > 0 shared at the approach [m].
+  void FrictionTorques(const TorsionalMesh& m,
+                       int segment,
+                       double phase_m,
+                       double approach_m,
+                       double force_n,
+                       double* tf1,
+                       double* tf2) const;
   // -F_c of the back flanks on mesh m (the back flanks' mesh, or the drive flanks' one
   // without it) in its segment at its phase.
   double BackFlankForce(

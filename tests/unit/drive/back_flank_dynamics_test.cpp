@@ -184,6 +184,71 @@ TEST(BackFlanks, HalvingTheToleranceChangesAResonanceStrikingThemByLessThanHalfA
               100 * r1.back_flank_fraction);
 }
 
+// Friction on the back flanks: with one inertia made huge, the change of x'' that friction
+// makes isolates the torque on the other gear, T_f1 or T_f2. They must be those of the coast
+// contacts, sum_j mu F_cj sgn(u1 - u2)_j rho_ij with rho_1c = T1cA_c + s_c, rho_2c = T1cT2c -
+// rho_1c on the coast line of action (gear core) and u_i = w_i rho_ic, and their power on
+// the gears, -T_f1 w1 + T_f2 w2 = -sum_j mu F_cj |u1 - u2|_j, dissipates.
+TEST(BackFlanks, FrictionOnTheBackFlanksDissipatesAtTheCoastContacts) {
+  const Asymmetric a;
+  const LineOfAction& coast = a.pair.line(Flank::kCoast);
+  const TorsionalMesh& back = *a.mesh.back_flanks();
+  TorsionalParameters p = a.params;
+  p.friction = FrictionLaw::kConstant;
+  p.friction_coefficient = 0.1;
+  p.damping_ratio = 0;
+  const double w1 = p.pinion_speed_rad_s;
+  const double w2 = w1 * a.pair.pinion().teeth / a.pair.wheel().teeth;
+  const double rb1 = a.mesh.pinion_base_radius_m(), rb2 = a.mesh.wheel_base_radius_m();
+  const double x = -4e-6;  // 4 um deep on the back flanks (b = 0)
+  int checked = 0;
+  for (int i = 0; i < 16; ++i) {
+    const double phi = a.mesh.base_pitch_m() * (i + 0.5) / 16;
+    const int seg = a.mesh.SegmentAt(phi);
+    double torque[2];
+    for (int gear = 0; gear < 2; ++gear) {
+      TorsionalParameters q = p;
+      (gear == 0 ? q.wheel_inertia_kg_m2 : q.pinion_inertia_kg_m2) *= 1e9;
+      TorsionalParameters dry = q;
+      dry.friction = FrictionLaw::kNone;
+      const TorsionalModel with(a.mesh, q), without(a.mesh, dry);
+      const double dxx = with.Acceleration(ContactState::kBackFlank, seg, phi, x, 0) -
+                         without.Acceleration(ContactState::kBackFlank, seg, phi, x, 0);
+      // dx'' = -(r_b1 T_f1 / J1 + r_b2 T_f2 / J2), the other term 1e9 times smaller.
+      torque[gear] =
+          gear == 0 ? -dxx * q.pinion_inertia_kg_m2 / rb1 : -dxx * q.wheel_inertia_kg_m2 / rb2;
+    }
+    // The coast contacts from the gear core's coast line.
+    const TorsionalModel m(a.mesh, p);
+    const double f_c = -m.MeshForce(ContactState::kBackFlank, seg, phi, x, 0);
+    const double q = a.mesh.BackPhase(phi);
+    const int bseg = back.SegmentAt(q);
+    double tf1 = 0, tf2 = 0, dissipated = 0, k_sum = 0;
+    for (int j = -2; j <= 3; ++j) {
+      const double sc = q + j * coast.base_pitch_m;
+      if (sc >= 0 && sc <= coast.length_m) k_sum += back.PairStiffness(sc);
+    }
+    for (int j = -2; j <= 3; ++j) {
+      const double sc = q + j * coast.base_pitch_m;
+      if (sc < 0 || sc > coast.length_m) continue;
+      const double rho1 = coast.a_m + sc, rho2 = coast.tangent_length_m - rho1;
+      const double u = w1 * rho1 - w2 * rho2;
+      const double fj = f_c * back.PairStiffness(sc) / k_sum;
+      tf1 += 0.1 * fj * (u > 0 ? 1 : -1) * rho1;
+      tf2 += 0.1 * fj * (u > 0 ? 1 : -1) * rho2;
+      dissipated += 0.1 * fj * std::abs(u);
+    }
+    (void)bseg;
+    EXPECT_NEAR(torque[0], tf1, 1e-6 * std::abs(tf1) + 1e-9) << "phi " << phi;
+    EXPECT_NEAR(torque[1], tf2, 1e-6 * std::abs(tf2) + 1e-9) << "phi " << phi;
+    const double power = -torque[0] * w1 + torque[1] * w2;
+    EXPECT_LT(power, 0.0) << "phi " << phi;
+    EXPECT_NEAR(power, -dissipated, 1e-6 * dissipated) << "phi " << phi;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 16);
+}
+
 // At zero backlash without corner contact the mesh is a piecewise-linear spring whose two
 // sides (drive and coast flanks) vary with their own phases: near its resonance that
 // parametric excitation can pump energy in faster than the damping takes it out, and with
