@@ -28,8 +28,16 @@ std::string Fmt(const char* format, double x) {
   return buf;
 }
 
+// A solved speed as it is: the solver returns rest as exactly 0, and a slow output of a
+// train of many stages (1e-12 of its input) is no round-off.
+std::string Speed(double w) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", w == 0.0 ? 0.0 : w);
+  return buf;
+}
+
 std::string Direction(const TrainMember& m, double w) {
-  if (std::abs(w) < 1e-12) return "at rest";
+  if (w == 0.0) return "at rest";
   if (m.kind == MemberKind::kRack) return w > 0 ? "+ (with the pinion's pitch point)" : "-";
   return w > 0 ? "counter-clockwise (+)" : "clockwise (-)";
 }
@@ -70,7 +78,7 @@ void Speeds(std::ostream& o, const internal::TrainFile& f, const TrainSolution& 
     if (m.kind == MemberKind::kRack) {
       std::snprintf(buf, sizeof buf, "  %-12s %-8s %6s %14s %14s  %s, %s m/s = %s m/min\n",
                     m.name.c_str(), "rack", "-", "-", "-", Direction(m, w).c_str(),
-                    Fmt("%.6g", w).c_str(), Fmt("%.6g", w * 60).c_str());
+                    Speed(w).c_str(), Speed(w * 60).c_str());
     } else if (BevelPlanet(f.spec, m)) {
       const double spin = w - s.speed[f.spec.Index(m.carrier)];
       std::snprintf(buf, sizeof buf,
@@ -80,8 +88,8 @@ void Speeds(std::ostream& o, const internal::TrainFile& f, const TrainSolution& 
                     Fmt("%.6g", RadPerSToRpm(spin)).c_str(), m.carrier.c_str());
     } else {
       std::snprintf(buf, sizeof buf, "  %-12s %-8s %6s %14s %14s  %s%s\n", m.name.c_str(),
-                    ToString(m.kind).c_str(), z.c_str(), Fmt("%.6g", w).c_str(),
-                    Fmt("%.6g", RadPerSToRpm(w)).c_str(), Direction(m, w).c_str(),
+                    ToString(m.kind).c_str(), z.c_str(), Speed(w).c_str(),
+                    Speed(RadPerSToRpm(w)).c_str(), Direction(m, w).c_str(),
                     m.speed ? (*m.speed == 0 ? "  [held]" : "  [input]") : "");
     }
     o << buf;

@@ -1,5 +1,7 @@
-// The gear train as one linear system A w = b (gear_train.hpp). Kinematic rows (meshes,
-// shafts) come first, then the inputs in file order, so a rank test per added row tells a
+// The gear train as one linear system A w = b (gear_train.hpp), solved in the speeds of the
+// groups of members that two-term relations tie together (train_groups.hpp): the speeds
+// are products of tooth ratios, exact whatever the ratio. Kinematic rows (meshes, shafts)
+// come first, then the inputs in file order, so a rank test per added row tells a
 // redundant or contradictory input from the relation it repeats.
 #include "tehl/drive/gear_train.hpp"
 
@@ -9,14 +11,12 @@
 #include <cstdio>
 #include <map>
 
+#include "drive/train_groups.hpp"
 #include "drive/train_mesh_rows.hpp"
 #include "tehl/error.hpp"
 
 namespace tehl {
 namespace {
-
-constexpr double kRankTolerance = 1e-10;  // pivot threshold on unit-norm rows [-]
-constexpr double kRestFraction = 1e-12;   // |w| below this times max |w| is rest [-]
 
 using Row = internal::TrainRow;
 
@@ -122,105 +122,33 @@ class TrainBuilder {
     problems_.ThrowIfAny();
 
     const int n = static_cast<int>(spec_.members.size());
-    const int rows = static_cast<int>(rows_.size());
-    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(rows, n);
-    Eigen::VectorXd b(rows);
-    for (int r = 0; r < rows; ++r) {
-      for (auto [j, v] : rows_[r].coeffs) a(r, j) += v;
-      b(r) = rows_[r].rhs;
-      const double norm = a.row(r).norm();
-      if (norm > 0) {
-        a.row(r) /= norm;
-        b(r) /= norm;
-      }
-    }
+    const internal::GroupSystem system(n, rows_);
     // Add the rows one by one: an input row that does not raise the rank repeats what the
     // earlier rows already fix.
     int rank = 0;
-    for (int r = 0; r < rows; ++r) {
-      Eigen::FullPivLU<Eigen::MatrixXd> lu(a.topRows(r + 1));
-      lu.setThreshold(kRankTolerance);
-      const int new_rank = static_cast<int>(lu.rank());
-      if (new_rank == rank && rows_[r].input) {
-        const TrainMember& m = spec_.members[rows_[r].member];
-        const Eigen::VectorXd w = a.topRows(r).completeOrthogonalDecomposition().solve(b.head(r));
-        const double implied = w(rows_[r].member);
-        const bool same = std::abs(implied - rows_[r].rhs) <= 1e-9 * (1 + std::abs(implied));
-        Problem(m.where, "speed",
-                std::string(same ? "over-determined: " : "contradictory: ") +
-                    "the meshes, shafts and earlier inputs already fix the speed of " + m.name +
-                    " at " + Num(std::abs(implied) < 1e-12 ? 0.0 : implied) +
-                    (m.kind == MemberKind::kRack ? " m/s" : " rad/s") +
-                    (std::abs(implied) < 1e-12 ? " (the train is locked there)" : ""),
-                "a speed on a member the other relations leave free (remove this one)");
-      }
+    for (int r = 0; r < system.rows(); ++r) {
+      const int new_rank = system.Rank(r + 1);
+      if (new_rank == rank && r >= system.kinematic_rows()) ReportRepeatedInput(system, r);
       rank = new_rank;
     }
     problems_.ThrowIfAny();
-    // The free motions of the meshes and shafts alone (the kinematic rows come first).
-    int kinematic = 0;
-    while (kinematic < rows && !rows_[kinematic].input) ++kinematic;
-    Eigen::MatrixXd free_motions = Eigen::MatrixXd::Identity(n, n);
-    if (kinematic > 0) {
-      Eigen::FullPivLU<Eigen::MatrixXd> lu(a.topRows(kinematic));
-      lu.setThreshold(kRankTolerance);
-      free_motions = lu.rank() == n ? Eigen::MatrixXd::Zero(n, 0) : Eigen::MatrixXd(lu.kernel());
-    }
-    if (free_motions.cols() > 0) {
-      Eigen::HouseholderQR<Eigen::MatrixXd> qr(free_motions);  // orthonormal basis
-      free_motions = qr.householderQ() * Eigen::MatrixXd::Identity(n, free_motions.cols());
-    }
-    // A member no free motion moves is locked by the meshes themselves (an odd loop of
-    // external gears): its rest is no answer. Locked inputs were reported above.
-    std::vector<std::string> locked;
-    std::string locked_where;
-    for (int j = 0; j < n; ++j)
-      if (free_motions.cols() == 0 || free_motions.row(j).cwiseAbs().maxCoeff() < 1e-9) {
-        locked.push_back(spec_.members[j].name);
-        if (locked_where.empty()) locked_where = spec_.members[j].where;
-      }
-    if (!locked.empty()) {
-      Problem(locked_where, "speed",
-              "locked: the meshes and shafts alone hold " + Join(locked) +
-                  " at rest (a loop of meshes that cannot turn, such as three external gears "
-                  "in a triangle)",
-              "meshes that leave the train free to turn (remove the mesh that closes the "
-              "loop)");
-      problems_.ThrowIfAny();
-    }
-    if (rank < n) {
-      Eigen::FullPivLU<Eigen::MatrixXd> lu(a);
-      lu.setThreshold(kRankTolerance);
-      const Eigen::MatrixXd kernel = lu.kernel();
-      std::vector<std::string> free;
-      std::string where;
-      for (int j = 0; j < n; ++j)
-        if (kernel.row(j).cwiseAbs().maxCoeff() > 1e-8) {
-          free.push_back(spec_.members[j].name);
-          if (where.empty()) where = spec_.members[j].where;
-        }
-      Problem(where, "speed",
-              "under-determined: the speeds of " + Join(free) + " are not fixed (" +
-                  std::to_string(n - rank) + " more condition" + (n - rank > 1 ? "s" : "") +
-                  " needed)",
-              "a driven speed (speed_rpm, speed_rad_s) or held = true on one of them, or a "
-              "mesh or shaft connecting them to the rest");
-      problems_.ThrowIfAny();
-    }
-    Eigen::VectorXd w = a.colPivHouseholderQr().solve(b);
-    // Round-off of a member at rest (a held ring's planet mesh, say) is rest.
-    const double w_max = w.cwiseAbs().maxCoeff();
-    for (int j = 0; j < n; ++j)
-      if (std::abs(w(j)) < kRestFraction * w_max) w(j) = 0.0;
+    const Eigen::MatrixXd free_motions = system.FreeMotions();
+    CheckLocked(system, free_motions);
+    const int count = system.groups().count;
+    if (rank < count) ReportFree(system);
     TrainSolution s;
-    s.speed.assign(w.data(), w.data() + n);
-    s.equations = rows;
+    s.speed = system.Speeds(system.Solve(system.rows()));
+    s.equations = static_cast<int>(rows_.size());
     s.unknowns = n;
-    s.rank = rank;
-    s.residual = rows ? (a * w - b).cwiseAbs().maxCoeff() / (1.0 + w.cwiseAbs().maxCoeff()) : 0;
-    s.free_motions.assign(free_motions.cols(), std::vector<double>(n));
-    for (int k = 0; k < free_motions.cols(); ++k)
-      for (int j = 0; j < n; ++j) s.free_motions[k][j] = free_motions(j, k);
+    s.rank = n - count + rank;
+    s.residual = Residual(s.speed);
+    for (int k = 0; k < free_motions.cols(); ++k) {
+      std::vector<double> v = system.Speeds(free_motions.col(k));
+      double largest = 0;
+      for (double x : v) largest = std::max(largest, std::abs(x));
+      for (double& x : v) x /= largest;
+      s.free_motions.push_back(std::move(v));
+    }
     const int in = spec_.Index(spec_.input), out = spec_.Index(spec_.output);
     if (in >= 0 && s.speed[in] == 0.0) {
       const TrainMember& m = spec_.members[in];
@@ -236,6 +164,75 @@ class TrainBuilder {
   }
 
  private:
+  // Reduced input row r repeats the earlier rows: over-determined or contradictory.
+  void ReportRepeatedInput(const internal::GroupSystem& system, int r) {
+    const Row& row = rows_[system.input_row(r)];
+    const TrainMember& m = spec_.members[row.member];
+    const double implied = system.Speeds(system.Solve(r))[row.member];
+    const bool same =
+        std::abs(implied - row.rhs) <= 1e-9 * std::max(std::abs(implied), std::abs(row.rhs));
+    Problem(m.where, "speed",
+            std::string(same ? "over-determined: " : "contradictory: ") +
+                "the meshes, shafts and earlier inputs already fix the speed of " + m.name +
+                " at " + Num(implied) + (m.kind == MemberKind::kRack ? " m/s" : " rad/s") +
+                (implied == 0.0 ? " (the train is locked there)" : ""),
+            "a speed on a member the other relations leave free (remove this one)");
+  }
+
+  // Members of the groups no free motion moves are locked by the meshes themselves (an odd
+  // loop of external gears): their rest is no answer. Locked inputs were reported above.
+  void CheckLocked(const internal::GroupSystem& system, const Eigen::MatrixXd& free) {
+    std::vector<std::string> locked;
+    std::string where;
+    for (int j = 0; j < static_cast<int>(spec_.members.size()); ++j) {
+      const int g = system.groups().group[j];
+      if (free.cols() > 0 && free.row(g).norm() >= 1e-9) continue;
+      locked.push_back(spec_.members[j].name);
+      if (where.empty()) where = spec_.members[j].where;
+    }
+    if (locked.empty()) return;
+    Problem(where, "speed",
+            "locked: the meshes and shafts alone hold " + Join(locked) +
+                " at rest (a loop of meshes that cannot turn, such as three external gears "
+                "in a triangle)",
+            "meshes that leave the train free to turn (remove the mesh that closes the loop)");
+    problems_.ThrowIfAny();
+  }
+
+  void ReportFree(const internal::GroupSystem& system) {
+    const Eigen::MatrixXd kernel = system.Kernel();
+    const int missing = static_cast<int>(kernel.cols());
+    std::vector<std::string> free;
+    std::string where;
+    for (int j = 0; j < static_cast<int>(spec_.members.size()); ++j)
+      if (kernel.row(system.groups().group[j]).cwiseAbs().maxCoeff() > 1e-8) {
+        free.push_back(spec_.members[j].name);
+        if (where.empty()) where = spec_.members[j].where;
+      }
+    Problem(where, "speed",
+            "under-determined: the speeds of " + Join(free) + " are not fixed (" +
+                std::to_string(missing) + " more condition" + (missing > 1 ? "s" : "") + " needed)",
+            "a driven speed (speed_rpm, speed_rad_s) or held = true on one of them, or a "
+            "mesh or shaft connecting them to the rest");
+    problems_.ThrowIfAny();
+  }
+
+  // max |A w - b| over the rows of the members' system, each row at unit norm, relative to
+  // the largest speed.
+  double Residual(const std::vector<double>& w) const {
+    double worst = 0, largest = 0;
+    for (double x : w) largest = std::max(largest, std::abs(x));
+    for (const Row& row : rows_) {
+      double sum = -row.rhs, norm = 0;
+      for (auto [j, v] : row.coeffs) {
+        sum += v * w[j];
+        norm += v * v;
+      }
+      if (norm > 0) worst = std::max(worst, std::abs(sum) / std::sqrt(norm));
+    }
+    return worst / (1.0 + largest);
+  }
+
   const GearTrainSpec& spec_;
   std::vector<Row> rows_;
   ProblemList problems_;

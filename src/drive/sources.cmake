@@ -7,6 +7,7 @@ list(APPEND TEHL_SOURCES
   src/drive/dynamic_sweep.cpp
   src/drive/gear_train.cpp
   src/drive/train_mesh_rows.cpp
+  src/drive/train_groups.cpp
   src/drive/gear_train_tabulation.cpp
   src/drive/train_torques.cpp
   src/drive/planet_design.cpp

@@ -52,6 +52,16 @@ TrainTorques SolveTrainTorques(const GearTrainSpec& spec,
     for (int c = 0; c < u; ++c) a(r, c) = v[unknown[c]];
     b(r) = -input_torque * v[t.input];
   }
+  // Each unknown's column at unit norm: an output many stages from the input moves by a
+  // tiny fraction of what a held reaction near the input would, and its torque is as large.
+  Eigen::VectorXd scale = Eigen::VectorXd::Ones(u);
+  for (int c = 0; c < u; ++c) {
+    const double norm = a.col(c).norm();
+    if (norm > 0) {
+      scale(c) = norm;
+      a.col(c) /= norm;
+    }
+  }
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a);
   qr.setThreshold(1e-10);
   if (qr.rank() < u) {
@@ -60,14 +70,15 @@ TrainTorques SolveTrainTorques(const GearTrainSpec& spec,
         "members share a motion)";
     return t;
   }
-  const Eigen::VectorXd tau = qr.solve(b);
-  if ((a * tau - b).norm() > 1e-9 * (std::abs(input_torque) + tau.norm())) {
+  const Eigen::VectorXd scaled = qr.solve(b);
+  if ((a * scaled - b).norm() > 1e-9 * (b.norm() + (a.cwiseAbs() * scaled.cwiseAbs()).norm())) {
     t.message = "no torques balance the input (the output does not move with it)";
     return t;
   }
+  const Eigen::VectorXd tau = scaled.cwiseQuotient(scale);
   t.torque[t.input] = input_torque;
   for (int c = 0; c < u; ++c)
-    t.torque[unknown[c]] = std::abs(tau(c)) < 1e-12 * std::abs(input_torque) ? 0.0 : tau(c);
+    t.torque[unknown[c]] = std::abs(scaled(c)) < 1e-12 * b.norm() ? 0.0 : tau(c);
   double power = 0;
   for (int j = 0; j < n; ++j)
     if (t.torque[j]) power += *t.torque[j] * solution.speed[j];
