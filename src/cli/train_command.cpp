@@ -210,6 +210,12 @@ void Planets(std::ostream& o, const internal::TrainFile& f) {
   }
 }
 
+void Notes(std::ostream& o, const internal::TrainFile& f) {
+  if (f.notes.empty()) return;
+  o << "\nNotes:\n";
+  for (const std::string& n : f.notes) o << "  " << n << "\n";
+}
+
 int Motor(std::ostream& o, const internal::TrainFile& f, const internal::TrainResult& r) {
   const DcMotor motor(*f.motor);
   const DcMotorSpec& s = motor.spec();
@@ -319,6 +325,7 @@ Command AddTrainCommand(CLI::App& app) {
               Speeds(o, f, r.solution);
               Tables(o, r.tables);
               Planets(o, f);
+              Notes(o, f);
             }
             if (f.motor) code = Motor(o, f, r);
             if (!f.spec.members.empty()) Torques(o, f, r.solution, r.torques, f.motor.has_value());

@@ -21,8 +21,12 @@ std::string Mm(double x_m) {
 }
 
 // A simple planetary set on `carrier`: sun (external mesh with the planet), planet, ring
-// (internal mesh, more teeth than the planet), sun and ring on fixed axes.
-std::optional<PlanetarySetOnCarrier> FindSet(const GearTrainSpec& s, const std::string& carrier) {
+// (internal mesh, b of the mesh, more teeth than the planet), sun and ring on fixed axes.
+// Without one, `why` says what stands in the way when it is a ring that cannot hold its
+// planet.
+std::optional<PlanetarySetOnCarrier> FindSet(const GearTrainSpec& s,
+                                             const std::string& carrier,
+                                             std::string* why) {
   for (const TrainMember& p : s.members) {
     if (p.kind != MemberKind::kGear || p.carrier != carrier) continue;
     std::string sun, ring;
@@ -33,8 +37,14 @@ std::optional<PlanetarySetOnCarrier> FindSet(const GearTrainSpec& s, const std::
       if (o < 0 || s.members[o].kind != MemberKind::kGear || !s.members[o].carrier.empty())
         continue;
       if (m.kind == MeshKind::kExternal && sun.empty()) sun = other;
-      if (m.kind == MeshKind::kInternal && ring.empty() && s.members[o].teeth > p.teeth)
+      if (m.kind != MeshKind::kInternal || m.a != p.name || !ring.empty()) continue;
+      if (s.members[o].teeth > p.teeth) {
         ring = other;
+      } else if (why->empty()) {
+        *why = "ring " + other + " (z = " + std::to_string(s.members[o].teeth) +
+               ") cannot hold planet " + p.name + " (z = " + std::to_string(p.teeth) +
+               ") inside it, [" + m.where + "]: a ring needs more teeth than its planet";
+      }
     }
     if (sun.empty() || ring.empty()) continue;
     PlanetarySetOnCarrier f;
@@ -176,6 +186,25 @@ void CheckSteps(Document& doc,
 
 }  // namespace
 
+void NoteCloseInternalPairs(const GearTrainSpec& spec, std::vector<std::string>* notes) {
+  for (const TrainMesh& m : spec.meshes) {
+    if (m.kind != MeshKind::kInternal) continue;
+    const int a = spec.Index(m.a), b = spec.Index(m.b);
+    if (a < 0 || b < 0) continue;
+    const int difference = spec.members[b].teeth - spec.members[a].teeth;
+    if (difference <= 0 || difference >= kMinInternalToothDifference) continue;
+    notes->push_back(
+        "[" + m.where + "]: ring " + m.b + " has only " + std::to_string(difference) +
+        " teeth more than " + m.a +
+        " inside it; standard 20 deg full-depth teeth need a "
+        "difference of at least " +
+        std::to_string(kMinInternalToothDifference) +
+        " to clear the tips (trochoid interference; SDP/SI, Elements of Metric Gear "
+        "Technology, section 5.2): such a pair needs profile-shifted teeth (and is assembled "
+        "axially); the speeds hold either way");
+  }
+}
+
 std::string PlanetLimitText(double limit) {
   const double r = std::round(limit);
   char buf[32];
@@ -191,14 +220,16 @@ void CheckPlanets(Document& doc, TrainFile* file) {
   for (const TrainMember& c : spec.members) {
     if (c.kind != MemberKind::kCarrier) continue;
     const std::string sec = "carrier." + c.name;
-    std::optional<PlanetarySetOnCarrier> found = FindSet(spec, c.name);
+    std::string why;
+    std::optional<PlanetarySetOnCarrier> found = FindSet(spec, c.name, &why);
     const bool declared = doc.Given(sec, "planets");
     if (!found) {
       if (declared)
         doc.Problem(sec, "planets",
-                    "no simple planetary set (sun, planet, ring) on this carrier to check",
+                    "no simple planetary set (sun, planet, ring) on this carrier to check" +
+                        (why.empty() ? std::string() : ": " + why),
                     "planets only for a carrier with a sun-planet external mesh and a "
-                    "planet-ring internal mesh");
+                    "planet-ring internal mesh (a = the planet, b = a ring with more teeth)");
       continue;
     }
     found->set.addendum_coefficient = doc.Real(sec, "addendum_coefficient");

@@ -93,13 +93,21 @@ void MeshRows::Add(const TrainMesh& mesh) {
       s = (mesh.kind == MeshKind::kBevel && mesh.bevel_same_sense) ? 1.0 : -1.0;
       break;
     case MeshKind::kInternal: {
+      // b is the ring, a the gear inside it; their centre distance m (z_b - z_a)/2 must be
+      // positive.
       s = 1.0;
-      if (a.teeth == b.teeth)
+      if (b.teeth <= a.teeth)
         return Problem(mesh.where, "b",
-                       "an internal pair needs a ring with more teeth than "
-                       "its pinion; both have " +
-                           std::to_string(a.teeth),
-                       "z_ring > z_pinion");
+                       "the ring " + b.name + " (b, internal teeth) has " +
+                           std::to_string(b.teeth) + " teeth, " +
+                           (b.teeth == a.teeth ? "as many as" : "fewer than") + " " + a.name +
+                           " (a, " + std::to_string(a.teeth) +
+                           ") inside it: the centre distance m (z_ring - z_pinion)/2 = m (" +
+                           std::to_string(b.teeth) + " - " + std::to_string(a.teeth) + ")/2 is " +
+                           (b.teeth == a.teeth ? "zero" : "negative"),
+                       "z_ring > z_pinion, with b = the ring and a = the pinion or planet inside "
+                       "it (swap a and b if " +
+                           a.name + " is the ring)");
       break;
     }
     case MeshKind::kWorm:

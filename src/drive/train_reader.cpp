@@ -201,6 +201,9 @@ TrainFile ReadTrainFile(const std::string& path) {
   file.path = path;
   TrainReader reader(&doc, &file);
   reader.Read(names);
+  // The planet rules are checked after a failed trial solve too: they say why a carrier's
+  // set is no planetary set (a ring smaller than its planet, say).
+  const bool read = doc.problems().empty();
   if (!file.spec.members.empty() && !file.motor && !doc.HasSection("motor") &&
       doc.problems().empty()) {
     try {
@@ -218,7 +221,8 @@ TrainFile ReadTrainFile(const std::string& path) {
   if (file.spec.members.empty() && !doc.HasSection("motor"))
     doc.Problem("gear", "", "a train file needs gears (or a [motor] on its own)",
                 "[gear.NAME] sections with [mesh.NAME] sections between them");
-  if (doc.problems().empty()) CheckPlanets(doc, &file);
+  if (read) CheckPlanets(doc, &file);
+  NoteCloseInternalPairs(file.spec, &file.notes);
   doc.ThrowIfProblems();
   return file;
 }

@@ -44,6 +44,7 @@ struct TrainFile {
   std::string name;               // [train] name
   GearTrainSpec spec;             // speeds in rad/s (racks m/s)
   std::vector<PlanetarySetOnCarrier> planetary;
+  std::vector<std::string> notes;  // design notes for the report (close internal pairs)
   std::optional<DcMotorSpec> motor;
   std::optional<double> speed_command_rad_s;  // [motor] speed_command_rpm
   std::string load_member;        // [load] member (default: the train's output)

@@ -125,7 +125,7 @@ TEST(GearTrain, Seed001Example25PlanetAroundFixedSunAndInsideFixedRing) {
     s.members = {Gear("1", 60), Gear("2", 20, "", "3"), Arm("3")};
     s.members[0].speed = 0.0;
     s.members[2].speed = 10.0;
-    s.meshes = {Mesh("1", "2", k)};
+    s.meshes = {Mesh("2", "1", k)};  // internal: 1 is the ring (b), 2 inside it (a)
     const TrainSolution r = SolveGearTrain(s);
     const double expected = k == MeshKind::kExternal ? 10.0 * (1 + 60.0 / 20) : 10.0 * (1 - 3.0);
     EXPECT_NEAR(Speed(s, r, "2"), expected, 1e-9) << ToString(k);
@@ -365,10 +365,10 @@ TEST(GearTrain, ASecondMeshOfTheSamePairIsReportedThere) {
   GearTrainSpec s;
   s.members = {Gear("A", 20), Gear("B", 40)};
   s.members[0].speed = 1.0;
-  s.meshes = {Mesh("A", "B"), Mesh("B", "A", MeshKind::kInternal)};
+  s.meshes = {Mesh("A", "B"), Mesh("A", "B", MeshKind::kInternal)};
   s.meshes[1].where = "mesh.again";
   const std::string m = Message(s);
-  EXPECT_NE(m.find("mesh.again.b: B and A already mesh in [mesh.AB]"), std::string::npos) << m;
+  EXPECT_NE(m.find("mesh.again.b: A and B already mesh in [mesh.AB]"), std::string::npos) << m;
   EXPECT_EQ(m.find("speed"), std::string::npos) << m;
 }
 
