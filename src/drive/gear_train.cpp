@@ -110,6 +110,12 @@ class TrainBuilder {
     for (auto [name, field] : {std::pair{spec_.input, "input"}, {spec_.output, "output"}})
       if (!name.empty() && spec_.Index(name) < 0)
         Problem("train", field, "no member named '" + name + "'", "a gear, carrier or rack");
+    // w_a / w_a = 1 whatever the train: a slip of the file, not a train value.
+    if (!spec_.input.empty() && spec_.output == spec_.input)
+      Problem("train", "output",
+              "the output is the input member " + spec_.input + ": w_" + spec_.input + " / w_" +
+                  spec_.input + " = 1 says nothing of the train",
+              "a member other than the input (" + spec_.input + ")");
   }
 
   TrainSolution Solve() {

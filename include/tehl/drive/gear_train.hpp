@@ -18,9 +18,9 @@
 //
 // The rank of the system is checked: a train whose speeds are not all fixed, a locked train
 // (a member the meshes and shafts alone hold at rest), a speed given for a member the other
-// relations already fix, a second mesh between the same two members, and an input member at
-// rest (w_output / w_input undefined) are input errors naming the members and relations
-// concerned.
+// relations already fix, a second mesh between the same two members, an input member at
+// rest (w_output / w_input undefined) and an output that is the input member are input
+// errors naming the members and relations concerned.
 // Precision: members tied by meshes on fixed axes, shafts and racks turn in proportions that
 // are products of tooth ratios along those relations; only the meshes on carriers (Willis)
 // and the inputs are solved as a linear system, in one speed per such group, scaled to

@@ -133,5 +133,16 @@ TEST(TrainChecks, InternalPairWithFewerThanTenTeethDifferenceGetsANote) {
   EXPECT_EQ(out.find("Notes:"), std::string::npos) << out;
 }
 
+TEST(TrainChecks, OutputThatIsTheInputIsRejected) {
+  // w_a / w_a = 1 for any train: the file names one member twice.
+  const std::string m = Problems(
+      "[train]\ninput = \"a\"\noutput = \"a\"\n[gear.a]\nteeth = 30\nspeed_rpm = 1000.0\n"
+      "[gear.b]\nteeth = 30\n[mesh.ab]\na = \"a\"\nb = \"b\"\n");
+  EXPECT_NE(m.find("F:3: train.output = \"a\": the output is the input member a: w_a / w_a = 1"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("allowed: a member other than the input (a)"), std::string::npos) << m;
+}
+
 }  // namespace
 }  // namespace tehl
