@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "cli/commands.hpp"
 #include "drive/train_checks.hpp"
@@ -51,11 +52,22 @@ bool BevelPlanet(const GearTrainSpec& spec, const TrainMember& m) {
   return false;
 }
 
-std::string TrainValueUnit(const GearTrainSpec& spec) {
+// The units of the train value w_output / w_input and of the speed ratio, its inverse: a
+// rack's speed is in m/s, so a rack output gives m/rad (speed ratio rad/m), a rack input the
+// other way round.
+std::pair<std::string, std::string> TrainValueUnits(const GearTrainSpec& spec) {
   const int in = spec.Index(spec.input), out = spec.Index(spec.output);
   const bool rack_in = spec.members[in].kind == MemberKind::kRack;
   const bool rack_out = spec.members[out].kind == MemberKind::kRack;
-  return rack_in == rack_out ? "" : rack_in ? " rad/m" : " m/rad";
+  if (rack_in == rack_out) return {"", ""};
+  return rack_in ? std::pair{" rad/m", " m/rad"} : std::pair{" m/rad", " rad/m"};
+}
+
+// "[input]" on a driven member (the motor's included), "[held]" on a held one.
+std::string Mark(const internal::TrainFile& f, const TrainMember& m) {
+  if (f.motor && m.name == f.spec.input) return "  [input, motor]";
+  if (!m.speed) return "";
+  return *m.speed == 0 ? "  [held]" : "  [input]";
 }
 
 void Speeds(std::ostream& o, const internal::TrainFile& f, const TrainSolution& s) {
@@ -76,9 +88,9 @@ void Speeds(std::ostream& o, const internal::TrainFile& f, const TrainSolution& 
     std::string z = m.kind == MemberKind::kGear ? std::to_string(m.teeth) : "-";
     if (m.worm_hand != WormHand::kNone) z += m.worm_hand == WormHand::kRight ? "R" : "L";
     if (m.kind == MemberKind::kRack) {
-      std::snprintf(buf, sizeof buf, "  %-12s %-8s %6s %14s %14s  %s, %s m/s = %s m/min\n",
+      std::snprintf(buf, sizeof buf, "  %-12s %-8s %6s %14s %14s  %s, %s m/s = %s m/min%s\n",
                     m.name.c_str(), "rack", "-", "-", "-", Direction(m, w).c_str(),
-                    Speed(w).c_str(), Speed(w * 60).c_str());
+                    Speed(w).c_str(), Speed(w * 60).c_str(), Mark(f, m).c_str());
     } else if (BevelPlanet(f.spec, m)) {
       const double spin = w - s.speed[f.spec.Index(m.carrier)];
       std::snprintf(buf, sizeof buf,
@@ -89,17 +101,15 @@ void Speeds(std::ostream& o, const internal::TrainFile& f, const TrainSolution& 
     } else {
       std::snprintf(buf, sizeof buf, "  %-12s %-8s %6s %14s %14s  %s%s\n", m.name.c_str(),
                     ToString(m.kind).c_str(), z.c_str(), Speed(w).c_str(),
-                    Speed(RadPerSToRpm(w)).c_str(), Direction(m, w).c_str(),
-                    m.speed ? (*m.speed == 0 ? "  [held]" : "  [input]") : "");
+                    Speed(RadPerSToRpm(w)).c_str(), Direction(m, w).c_str(), Mark(f, m).c_str());
     }
     o << buf;
   }
   if (s.train_value) {
-    const std::string unit = TrainValueUnit(f.spec);
+    const auto [unit, inverse] = TrainValueUnits(f.spec);
     o << "Train value w_" << f.spec.output << " / w_" << f.spec.input << " = "
       << Fmt("%.8g", *s.train_value) << unit << " (speed ratio "
-      << Fmt("%.8g", 1.0 / *s.train_value) << (unit.empty() ? "" : " 1/" + unit.substr(1))
-      << " : 1)\n";
+      << Fmt("%.8g", 1.0 / *s.train_value) << inverse << " : 1)\n";
   }
   o << "Linear system: " << s.equations << " equations, " << s.unknowns << " unknowns, rank "
     << s.rank << ", residual " << Fmt("%.2e", s.residual) << "\n";
@@ -117,7 +127,8 @@ void Torques(std::ostream& o,
   const TrainMember& in = f.spec.members[t.input];
   o << "\nTorques (frictionless, by virtual work; applied to each member from outside, "
        "positive counter-clockwise; "
-    << (motor ? "at the motor's torque on " + in.name : "per 1 N m on " + in.name)
+    << (motor ? "at the motor's torque on " + in.name
+              : (in.kind == MemberKind::kRack ? "per 1 N on " : "per 1 N m on ") + in.name)
     << "; racks: force [N]):\n";
   double sum = 0;
   bool coaxial = true;

@@ -48,5 +48,45 @@ TEST(TrainReport, HighRatioTrainsPrintTheirExactSpeedsAndRatio) {
   EXPECT_NE(out.find("1.0472e-13          1e-12  counter-clockwise (+)"), std::string::npos) << out;
 }
 
+// Pinion p, 20 teeth, module 2 mm: pitch radius r = m z / 2 = 0.02 m, v_rack = w_p r.
+std::string RackPair(const std::string& input,
+                     const std::string& output,
+                     const std::string& p,
+                     const std::string& r) {
+  return "[train]\ninput = \"" + input + "\"\noutput = \"" + output +
+         "\"\n[gear.p]\nteeth = 20\nmodule_m = 0.002\n" + p + "[rack.r]\n" + r +
+         "[mesh.pr]\na = \"p\"\nb = \"r\"\nkind = \"rack\"\n";
+}
+
+TEST(TrainReport, RackTrainValuesAndSpeedRatiosCarryInverseUnits) {
+  // Rack driven at 0.5 m/s: w_p = 0.5 / 0.02 = 25 rad/s; w_p / v_r = 50 rad/m, so the speed
+  // ratio v_r / w_p is 0.02 m/rad. The driven rack is the input: 1 N on it balances
+  // -F r = -0.02 N m on the pinion.
+  int code = -1;
+  std::string out = Report(RackPair("r", "p", "", "speed_m_s = 0.5\n"), &code);
+  EXPECT_EQ(code, 0) << out;
+  EXPECT_NE(out.find("Train value w_p / w_r = 50 rad/m (speed ratio 0.02 m/rad : 1)"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("0.5 m/s = 30 m/min  [input]"), std::string::npos) << out;
+  EXPECT_NE(out.find("per 1 N on r;"), std::string::npos) << out;
+  EXPECT_NE(out.find("-0.02 N m"), std::string::npos) << out;
+  // Pinion driven at 100 rpm = 10.472 rad/s: v_r = 0.20944 m/s; v_r / w_p = 0.02 m/rad and
+  // the speed ratio w_p / v_r = 50 rad/m.
+  out = Report(RackPair("p", "r", "speed_rpm = 100.0\n", ""), &code);
+  EXPECT_EQ(code, 0) << out;
+  EXPECT_NE(out.find("Train value w_r / w_p = 0.02 m/rad (speed ratio 50 rad/m : 1)"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("per 1 N m on p;"), std::string::npos) << out;
+}
+
+TEST(TrainReport, TheMemberTheMotorDrivesIsMarkedAsTheInput) {
+  const auto r = testing::RunTehl("train '" + std::string(TEHL_SOURCE_DIR) +
+                                  "/cases/trains/motor_hoist.toml'");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("counter-clockwise (+)  [input, motor]"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace tehl
