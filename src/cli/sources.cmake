@@ -12,5 +12,6 @@ list(APPEND TEHL_CLI_SOURCES
   src/cli/sweep_command.cpp
   src/cli/sweep_mpi.cpp
   src/cli/train_command.cpp
+  src/cli/train_report.cpp
   src/cli/dynamics_command.cpp
 )

@@ -9,11 +9,13 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
 
 #include "cli/commands.hpp"
+#include "cli/train_report.hpp"
 #include "drive/train_checks.hpp"
 #include "drive/train_reader.hpp"
 #include "io/atomic_file.hpp"
@@ -23,11 +25,7 @@
 namespace tehl::cli {
 namespace {
 
-std::string Fmt(const char* format, double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, std::abs(x) < 5e-13 ? 0.0 : x);
-  return buf;
-}
+std::string Fmt(const char* format, double x) { return TrainFmt(format, x); }
 
 // A solved speed as it is: the solver returns rest as exactly 0, and a slow output of a
 // train of many stages (1e-12 of its input) is no round-off.
@@ -115,47 +113,6 @@ void Speeds(std::ostream& o, const internal::TrainFile& f, const TrainSolution& 
     << s.rank << ", residual " << Fmt("%.2e", s.residual) << "\n";
 }
 
-void Torques(std::ostream& o,
-             const internal::TrainFile& f,
-             const TrainSolution& s,
-             const TrainTorques& t,
-             bool motor) {
-  if (!t.solved) {
-    o << "\nTorques: not given (" << t.message << ")\n";
-    return;
-  }
-  const TrainMember& in = f.spec.members[t.input];
-  o << "\nTorques (frictionless, by virtual work; applied to each member from outside, "
-       "positive counter-clockwise; "
-    << (motor ? "at the motor's torque on " + in.name
-              : (in.kind == MemberKind::kRack ? "per 1 N on " : "per 1 N m on ") + in.name)
-    << "; racks: force [N]):\n";
-  double sum = 0;
-  bool coaxial = true;
-  for (size_t j = 0; j < f.spec.members.size(); ++j) {
-    if (!t.torque[j]) continue;
-    const TrainMember& m = f.spec.members[j];
-    const bool rack = m.kind == MemberKind::kRack;
-    coaxial = coaxial && !rack && m.carrier.empty();
-    sum += *t.torque[j];
-    const std::string role = static_cast<int>(j) == t.input    ? "input"
-                             : static_cast<int>(j) == t.output ? "output (the load)"
-                                                               : "held (the frame's reaction)";
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "  %-12s %14s %-4s %s\n", m.name.c_str(),
-                  Fmt("%+.6g", *t.torque[j]).c_str(), rack ? "N" : "N m", role.c_str());
-    o << buf;
-  }
-  o << "  power balance sum T w = " << Fmt("%.2e", t.power_residual) << " of the input power";
-  // On one common axis the torques balance: v = all members turning together is a motion.
-  if (coaxial && !std::any_of(f.spec.meshes.begin(), f.spec.meshes.end(), [](const auto& m) {
-        return m.kind == MeshKind::kBevel || m.kind == MeshKind::kWorm;
-      }))
-    o << "; sum of the torques " << Fmt("%.3g", sum) << " N m";
-  o << "\n";
-  (void)s;
-}
-
 void Tables(std::ostream& o, const std::vector<TabulationTable>& tables) {
   for (const TabulationTable& t : tables) {
     o << "\nTabulation, carrier " << t.carrier << " (reference gear " << t.reference
@@ -227,66 +184,18 @@ void Notes(std::ostream& o, const internal::TrainFile& f) {
   for (const std::string& n : f.notes) o << "  " << n << "\n";
 }
 
-int Motor(std::ostream& o, const internal::TrainFile& f, const internal::TrainResult& r) {
-  const DcMotor motor(*f.motor);
-  const DcMotorSpec& s = motor.spec();
-  o << "\nDC motor (" << ToString(s.type) << "): E = " << Fmt("%.6g", s.supply_voltage_v)
-    << " V, R_a = " << Fmt("%.6g", s.armature_resistance_ohm)
-    << " Ohm, K_a = " << Fmt("%.6g", motor.TorqueConstant());
-  if (s.type != DcMotorType::kPermanentMagnet && s.type != DcMotorType::kSeries)
-    o << ", I_f = " << Fmt("%.6g", motor.FieldCurrent()) << " A";
-  o << "\n  no-load speed "
-    << (std::isfinite(motor.NoLoadSpeed()) ? Fmt("%.6g", RadPerSToRpm(motor.NoLoadSpeed())) + " rpm"
-                                           : std::string("unbounded (series)"))
-    << ", stall torque " << Fmt("%.6g", motor.StallTorque()) << " N m\n";
-  if (s.rated_current_a > 0 && s.type == DcMotorType::kPermanentMagnet)
-    o << "  base speed " << Fmt("%.6g", RadPerSToRpm(motor.BaseSpeed())) << " rpm: constant torque "
-      << Fmt("%.6g", motor.RatedTorque())
-      << " N m below it; nothing above it (a permanent magnet has no field to weaken)\n";
-  else if (s.rated_current_a > 0)
-    o << "  base speed " << Fmt("%.6g", RadPerSToRpm(motor.BaseSpeed())) << " rpm: constant torque "
-      << Fmt("%.6g", motor.RatedTorque()) << " N m below it, constant power "
-      << Fmt("%.6g", motor.RatedTorque() * motor.BaseSpeed()) << " W above it\n";
-  o << "  load on " << (f.load_member.empty() ? "the motor shaft" : f.load_member) << ": "
-    << Fmt("%.6g", f.load.torque_nm) << " N m + " << Fmt("%.6g", f.load.viscous_nm_s)
-    << " N m s/rad |w|, w_load / w_motor = " << Fmt("%.8g", r.load_train_value) << ", efficiency "
-    << Fmt("%.4g", f.load.efficiency) << "\n";
-  if (r.controlled) {
-    const ControlledPoint& c = *r.controlled;
-    o << "  speed command " << Fmt("%.6g", RadPerSToRpm(*f.speed_command_rad_s))
-      << " rpm: " << ToString(c.region) << "\n  armature voltage "
-      << Fmt("%.6g", c.armature_voltage_v) << " V, "
-      << (s.type == DcMotorType::kSeparatelyExcited || s.type == DcMotorType::kShunt
-              ? "field current " + Fmt("%.6g", c.field_current_a) + " A, "
-              : std::string())
-      << "armature current " << Fmt("%.6g", c.armature_current_a) << " A, motor torque "
-      << Fmt("%.6g", c.motor_torque_nm) << " N m: " << c.message << "\n";
-    return c.feasible ? kExitOk : kExitNotConverged;
-  }
-  const MotorOperatingPoint& p = *r.motor;
-  o << "  operating point: " << p.message << "\n";
-  o << "    motor  " << Fmt("%.6g", RadPerSToRpm(p.motor_speed_rad_s)) << " rpm ("
-    << Fmt("%.6g", p.motor_speed_rad_s) << " rad/s), torque " << Fmt("%.6g", p.motor_torque_nm)
-    << " N m, armature current " << Fmt("%.6g", p.armature_current_a) << " A\n";
-  // A power that is the rounding residue of a balance at no load prints as 0.
-  const auto watts = [&](double w) {
-    return Fmt("%.6g", std::abs(w) < 1e-9 * std::max(1.0, std::abs(p.input_power_w)) ? 0.0 : w);
-  };
-  o << "    power  input " << watts(p.input_power_w) << " W, shaft " << watts(p.shaft_power_w)
-    << " W, load " << watts(p.load_power_w) << " W\n";
-  o << "    load   " << Fmt("%.6g", RadPerSToRpm(p.load_speed_rad_s)) << " rpm ("
-    << Fmt("%.6g", p.load_speed_rad_s) << " rad/s), torque " << Fmt("%.6g", p.load_torque_nm)
-    << " N m\n";
-  return p.usable() ? kExitOk : kExitNotConverged;
-}
-
 // The member table as CSV: teeth empty for carriers and racks; a bevel planet's speed
 // columns empty (its spin relative to the carrier in its own column); torque_nm (racks:
-// force_n) empty where no external torque acts.
-std::string SpeedsCsv(const internal::TrainFile& f, const TrainSolution& s, const TrainTorques& t) {
+// force_n) the frictionless torque (per 1 N m on the input, or at the motor's torque),
+// empty where no external torque acts; load_torque_nm, with a [motor], the load's torque
+// on the loaded member.
+std::string SpeedsCsv(const internal::TrainFile& f, const internal::TrainResult& r) {
+  const TrainSolution& s = r.solution;
+  const TrainTorques& t = r.torques;
+  const std::optional<double> load = TrainLoadTorque(f, r);
   std::ostringstream out;
   out << "member,kind,teeth,worm_hand,speed_rad_s,speed_rpm,speed_m_s,"
-         "spin_relative_to_carrier_rad_s,torque_nm,force_n\n";
+         "spin_relative_to_carrier_rad_s,torque_nm,force_n,load_torque_nm\n";
   for (size_t i = 0; i < f.spec.members.size(); ++i) {
     const TrainMember& m = f.spec.members[i];
     const bool rack = m.kind == MemberKind::kRack;
@@ -299,7 +208,8 @@ std::string SpeedsCsv(const internal::TrainFile& f, const TrainSolution& s, cons
         << (absolute ? Fmt("%.10g", RadPerSToRpm(s.speed[i])) : "") << ","
         << (rack ? Fmt("%.10g", s.speed[i]) : "") << ","
         << (bevel_planet ? Fmt("%.10g", s.speed[i] - s.speed[f.spec.Index(m.carrier)]) : "") << ","
-        << (rack ? "" : torque) << "," << (rack ? torque : "") << "\n";
+        << (rack ? "" : torque) << "," << (rack ? torque : "") << ","
+        << (load && static_cast<int>(i) == t.output ? Fmt("%.10g", *load) : "") << "\n";
   }
   return out.str();
 }
@@ -327,8 +237,7 @@ Command AddTrainCommand(CLI::App& app) {
             const internal::TrainFile f = internal::ReadTrainFile(*file);
             const internal::TrainResult r = internal::SolveTrainFile(f);
             // The CSV first: a path that cannot be written fails before any report.
-            if (!csv->empty() && !f.spec.members.empty())
-              WriteCsv(*csv, SpeedsCsv(f, r.solution, r.torques));
+            if (!csv->empty() && !f.spec.members.empty()) WriteCsv(*csv, SpeedsCsv(f, r));
             std::ostream& o = std::cout;
             o << "Train file " << f.path << (f.name.empty() ? "" : ": " + f.name) << "\n";
             int code = kExitOk;
@@ -338,8 +247,8 @@ Command AddTrainCommand(CLI::App& app) {
               Planets(o, f);
               Notes(o, f);
             }
-            if (f.motor) code = Motor(o, f, r);
-            if (!f.spec.members.empty()) Torques(o, f, r.solution, r.torques, f.motor.has_value());
+            if (f.motor) code = PrintTrainMotor(o, f, r);
+            if (!f.spec.members.empty()) PrintTrainTorques(o, f, r);
             return code;
           }};
 }

@@ -88,5 +88,79 @@ TEST(TrainReport, TheMemberTheMotorDrivesIsMarkedAsTheInput) {
   EXPECT_NE(r.out.find("counter-clockwise (+)  [input, motor]"), std::string::npos) << r.out;
 }
 
+std::string Shipped(const std::string& name, const std::string& options = "") {
+  const auto r = testing::RunTehl("train '" + std::string(TEHL_SOURCE_DIR) + "/cases/trains/" +
+                                  name + ".toml'" + options);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return r.out;
+}
+
+TEST(TrainReport, MotorRunSplitsTheLosslessOutputTorqueIntoLoadAndLosses) {
+  // Hoist: i = (20/40)(25/35)(2/40) = 1/56, T_m = 300 / 56 / 0.6 = 8.92857 N m. Lossless,
+  // the drum would take -T_m / i = -500 N m; the load takes 300 of them, the losses
+  // (efficiency 0.6) the other 200: 0.6 x 500 = 300.
+  const std::string out = Shipped("motor_hoist");
+  EXPECT_NE(out.find("at the motor's torque 8.92857 N m on A"), std::string::npos) << out;
+  EXPECT_NE(out.find("+8.92857 N m  input (the motor)"), std::string::npos) << out;
+  EXPECT_NE(out.find("-500 N m  output at the motor's torque, lossless"), std::string::npos) << out;
+  EXPECT_EQ(out.find("(the load)"), std::string::npos) << out;
+  EXPECT_NE(out.find("load on drum: -300 N m (the load's torque T_L = 300 N m, against the "
+                     "motion); the train's losses: -200 N m (efficiency 0.6)"),
+            std::string::npos)
+      << out;
+}
+
+TEST(TrainReport, MotorCsvGivesTheLosslessAndTheLoadTorque) {
+  // Separately excited motor, pinion 20 - gear 80 (i = -1/4), 100 N m on the gear,
+  // efficiency 0.95: T_m = 100 / 4 / 0.95 = 26.3158 N m. The gear turns negatively: the
+  // lossless output torque is +26.3158 x 4 = +105.263 N m, the load's +100 N m.
+  const std::string text =
+      "[train]\ninput = \"p\"\noutput = \"g\"\n[gear.p]\nteeth = 20\n[gear.g]\nteeth = 80\n"
+      "[mesh.pg]\na = \"p\"\nb = \"g\"\n[motor]\ntype = \"separately_excited\"\n"
+      "supply_voltage_v = 240.0\narmature_resistance_ohm = 0.2\nspeed_constant = 1.2\n"
+      "field_current_a = 1.5\n[load]\ntorque_nm = 100.0\nefficiency = 0.95\n";
+  const std::string csv = testing::UniqueTempPath("motor.csv");
+  int code = -1;
+  const std::string out = Report(text, &code, " --csv '" + csv + "'");
+  EXPECT_EQ(code, 0) << out;
+  std::ifstream in(csv);
+  std::string header, p, g;
+  std::getline(in, header);
+  std::getline(in, p);
+  std::getline(in, g);
+  std::remove(csv.c_str());
+  EXPECT_NE(header.find(",torque_nm,force_n,load_torque_nm"), std::string::npos) << header;
+  EXPECT_NE(p.find(",26.31578947,,"), std::string::npos) << p;
+  EXPECT_NE(g.find(",105.2631579,,100"), std::string::npos) << g;
+  // Input power: E I_a = 240 x 14.6199 = 3508.77 W (K_w I_f = 1.8: I_a = 26.3158 / 1.8);
+  // the field has its own supply.
+  EXPECT_NE(out.find("input 3508.77 W (armature E I_a = 240 V x 14.6199 A; the separately "
+                     "excited field, I_f = 1.5 A, has its own supply, not included)"),
+            std::string::npos)
+      << out;
+}
+
+TEST(TrainReport, ShuntMotorInputPowerIsArmatureAndField) {
+  // Hoist: E = 220 V, I_a = 8.92857 A, I_f = E / R_f = 220 / 110 = 2 A: the supply gives
+  // 220 x 8.92857 = 1964.29 W to the armature and 220 x 2 = 440 W to the field.
+  const std::string out = Shipped("motor_hoist");
+  EXPECT_NE(out.find("input 2404.29 W (armature E I_a = 1964.29 W + shunt field E I_f = 440 W, "
+                     "I_f = 2 A)"),
+            std::string::npos)
+      << out;
+}
+
+TEST(TrainReport, SumOfTheTorquesIsTheHousingReaction) {
+  // Reverted reducer, 1 N m on A: T_D = -1 / ((20/40)(25/35)) = -2.8 N m; the bearings of
+  // the counter shaft take the rest: the frame applies -(1 - 2.8) = +1.8 N m to the gears.
+  std::string out = Shipped("reverted");
+  EXPECT_NE(out.find("housing (frame) reaction through the bearings: +1.8 N m"), std::string::npos)
+      << out;
+  // A planetary is coaxial: the held ring's +1.8 N m is the frame's whole share.
+  out = Shipped("seed001_ex2_11_planetary_reducer");
+  EXPECT_NE(out.find("housing (frame) reaction through the bearings: 0 N m"), std::string::npos)
+      << out;
+}
+
 }  // namespace
 }  // namespace tehl
