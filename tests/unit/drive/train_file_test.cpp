@@ -51,11 +51,14 @@ TEST(TrainFile, Seed001Example23) {  // 0.03125, 7.5 rpm, rack 7.66 m/min
   EXPECT_NEAR(std::abs(s.Speed("10")) * 60.0, 7.66, 0.005);
 }
 
-TEST(TrainFile, Seed001Example24) {  // rolls at about 39.07 and 56.03 rpm (document)
+TEST(TrainFile, Seed001Example24) {  // document targets 39.07 and 56.03 rpm
   const Solved s = Solve("seed001_ex2_4_two_rolls");
-  // 1800 / (1.846 * 25) = 39.0 and 1800 / (1.607 * 20) = 56.0 with the rounded teeth.
-  EXPECT_NEAR(std::abs(RadPerSToRpm(s.Speed("9"))), 39.07, 0.1);
-  EXPECT_NEAR(std::abs(RadPerSToRpm(s.Speed("13"))), 56.03, 0.1);
+  // With the rounded teeth, by hand: gear 2 at -1800 (16/25) = -1152 rpm; left-hand worm 6
+  // (2 starts) drives 7 at -(2/64)(-1152) = +36; 8 -> 9: -36 (26/24) = -39 rpm. Gear 3 at
+  // -1800 (16/20) = -1440; 4 -> 5: +480; right-hand worm 10 (3 starts): +(3/50) 480 = 28.8;
+  // 12 -> 13: -28.8 (35/18) = -56 rpm.
+  EXPECT_NEAR(RadPerSToRpm(s.Speed("9")), -39.0, 1e-12);
+  EXPECT_NEAR(RadPerSToRpm(s.Speed("13")), -56.0, 1e-12);
 }
 
 TEST(TrainFile, Seed001Example26Seed002) {  // +30.95 rad/s, tabulation of Example 2.10
