@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -160,6 +161,18 @@ TEST(TrainReport, SumOfTheTorquesIsTheHousingReaction) {
   out = Shipped("seed001_ex2_11_planetary_reducer");
   EXPECT_NE(out.find("housing (frame) reaction through the bearings: 0 N m"), std::string::npos)
       << out;
+}
+
+TEST(TrainReport, CsvIntoMissingFoldersCreatesThem) {
+  // As `tehl gear --csv`: the folders of the path are made, the file written atomically.
+  namespace fs = std::filesystem;
+  const fs::path top = testing::UniqueTempPath("csv_folders");
+  const fs::path csv = top / "a" / "b" / "speeds.csv";
+  ASSERT_FALSE(fs::exists(top));
+  Shipped("reverted", " --csv '" + csv.string() + "'");
+  EXPECT_TRUE(fs::is_regular_file(csv));
+  EXPECT_FALSE(fs::exists(csv.string() + ".part"));
+  fs::remove_all(top);
 }
 
 }  // namespace
