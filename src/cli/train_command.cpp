@@ -27,13 +27,15 @@ namespace {
 
 std::string Fmt(const char* format, double x) { return TrainFmt(format, x); }
 
-// A solved speed as it is: the solver returns rest as exactly 0, and a slow output of a
-// train of many stages (1e-12 of its input) is no round-off.
-std::string Speed(double w) {
+// A solved speed (or the train value) as it is: the solver returns rest as exactly 0, and a
+// slow output of a train of many stages (1e-12 of its input and less) is no round-off.
+std::string Exact(const char* format, double x) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", w == 0.0 ? 0.0 : w);
+  std::snprintf(buf, sizeof buf, format, x == 0.0 ? 0.0 : x);
   return buf;
 }
+
+std::string Speed(double w) { return Exact("%.6g", w); }
 
 std::string Direction(const TrainMember& m, double w) {
   if (w == 0.0) return "at rest";
@@ -106,8 +108,8 @@ void Speeds(std::ostream& o, const internal::TrainFile& f, const TrainSolution& 
   if (s.train_value) {
     const auto [unit, inverse] = TrainValueUnits(f.spec);
     o << "Train value w_" << f.spec.output << " / w_" << f.spec.input << " = "
-      << Fmt("%.8g", *s.train_value) << unit << " (speed ratio "
-      << Fmt("%.8g", 1.0 / *s.train_value) << inverse << " : 1)\n";
+      << Exact("%.8g", *s.train_value) << unit << " (speed ratio "
+      << Exact("%.8g", 1.0 / *s.train_value) << inverse << " : 1)\n";
   }
   o << "Linear system: " << s.equations << " equations, " << s.unknowns << " unknowns, rank "
     << s.rank << ", residual " << Fmt("%.2e", s.residual) << "\n";
@@ -204,9 +206,9 @@ std::string SpeedsCsv(const internal::TrainFile& f, const internal::TrainResult&
     const std::string torque = t.solved && t.torque[i] ? Fmt("%.10g", *t.torque[i]) : "";
     out << m.name << "," << ToString(m.kind) << ","
         << (m.kind == MemberKind::kGear ? std::to_string(m.teeth) : "") << ","
-        << ToString(m.worm_hand) << "," << (absolute ? Fmt("%.10g", s.speed[i]) : "") << ","
-        << (absolute ? Fmt("%.10g", RadPerSToRpm(s.speed[i])) : "") << ","
-        << (rack ? Fmt("%.10g", s.speed[i]) : "") << ","
+        << ToString(m.worm_hand) << "," << (absolute ? Exact("%.10g", s.speed[i]) : "") << ","
+        << (absolute ? Exact("%.10g", RadPerSToRpm(s.speed[i])) : "") << ","
+        << (rack ? Exact("%.10g", s.speed[i]) : "") << ","
         << (bevel_planet ? Fmt("%.10g", s.speed[i] - s.speed[f.spec.Index(m.carrier)]) : "") << ","
         << (rack ? "" : torque) << "," << (rack ? torque : "") << ","
         << (load && static_cast<int>(i) == t.output ? Fmt("%.10g", *load) : "") << "\n";

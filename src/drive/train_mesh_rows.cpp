@@ -96,7 +96,8 @@ void MeshRows::Add(const TrainMesh& mesh) {
       // b is the ring, a the gear inside it; their centre distance m (z_b - z_a)/2 must be
       // positive.
       s = 1.0;
-      if (b.teeth <= a.teeth)
+      // (A second mesh of the pair is reported as such below.)
+      if (b.teeth <= a.teeth && !pair_mesh_.count(std::minmax(ia, ib)))
         return Problem(mesh.where, "b",
                        "the ring " + b.name + " (b, internal teeth) has " +
                            std::to_string(b.teeth) + " teeth, " +

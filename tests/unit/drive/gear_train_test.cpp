@@ -365,10 +365,12 @@ TEST(GearTrain, ASecondMeshOfTheSamePairIsReportedThere) {
   GearTrainSpec s;
   s.members = {Gear("A", 20), Gear("B", 40)};
   s.members[0].speed = 1.0;
-  s.meshes = {Mesh("A", "B"), Mesh("A", "B", MeshKind::kInternal)};
+  // (B as the ring of 20 teeth around A's 40 would be wrong too: the repeat is the slip.)
+  s.meshes = {Mesh("A", "B"), Mesh("B", "A", MeshKind::kInternal)};
   s.meshes[1].where = "mesh.again";
   const std::string m = Message(s);
-  EXPECT_NE(m.find("mesh.again.b: A and B already mesh in [mesh.AB]"), std::string::npos) << m;
+  EXPECT_NE(m.find("mesh.again.b: B and A already mesh in [mesh.AB]"), std::string::npos) << m;
+  EXPECT_EQ(m.find("the ring"), std::string::npos) << m;
   EXPECT_EQ(m.find("speed"), std::string::npos) << m;
 }
 

@@ -43,10 +43,19 @@ TEST(TrainReport, HighRatioTrainsPrintTheirExactSpeedsAndRatio) {
   EXPECT_NE(out.find("Train value w_g8 / w_p0 = 1e-08 (speed ratio 1e+08 : 1)"), std::string::npos)
       << out;
   EXPECT_NE(out.find("3e-05  counter-clockwise (+)"), std::string::npos) << out;
-  // 1 rpm through 12 stages: g12 at 1e-12 rpm = 1.0472e-13 rad/s, slow but turning.
-  out = Report(Chain(12, 1.0), &code);
+  // 1 rpm through 12 stages: g12 at 1e-12 rpm = 1.0472e-13 rad/s, slow but turning; in the
+  // CSV too.
+  const std::string csv = testing::UniqueTempPath("chain.csv");
+  out = Report(Chain(12, 1.0), &code, " --csv '" + csv + "'");
   EXPECT_EQ(code, 0) << out;
   EXPECT_NE(out.find("1.0472e-13          1e-12  counter-clockwise (+)"), std::string::npos) << out;
+  EXPECT_NE(testing::ReadAll(csv).find("g12,gear,100,,1.047197551e-13,1e-12,"), std::string::npos)
+      << testing::ReadAll(csv);
+  std::remove(csv.c_str());
+  // 14 stages: a train value of 1e-14 is no round-off either.
+  out = Report(Chain(14, 1.0), &code);
+  EXPECT_NE(out.find("Train value w_g14 / w_p0 = 1e-14 (speed ratio 1e+14 : 1)"), std::string::npos)
+      << out;
 }
 
 // Pinion p, 20 teeth, module 2 mm: pitch radius r = m z / 2 = 0.02 m, v_rack = w_p r.
