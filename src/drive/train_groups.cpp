@@ -2,6 +2,7 @@
 // (train_groups.hpp).
 #include "drive/train_groups.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -12,16 +13,8 @@ namespace {
 // difference are one ratio: a path of 20 stages rounds to about 1e-14 [-].
 constexpr double kLoopTolerance = 1e-11;
 constexpr double kRankTolerance = 1e-10;  // pivot threshold on unit-norm rows [-]
-constexpr double kRestFraction = 1e-12;   // |y| below this times max |y| is rest [-]
+constexpr double kRestFraction = 1e-12;   // |y| below this times its component's max is rest
 constexpr double kCancelled = 1e-12;      // a coefficient this small against its terms is 0 [-]
-
-// Scaled group speeds below kRestFraction of the largest are round-off of rest.
-Eigen::VectorXd Rest(Eigen::VectorXd y) {
-  const double largest = y.size() ? y.cwiseAbs().maxCoeff() : 0.0;
-  for (double& x : y)
-    if (std::abs(x) < kRestFraction * largest) x = 0.0;
-  return y;
-}
 
 Eigen::MatrixXd KernelOf(const Eigen::MatrixXd& m) {
   if (m.rows() == 0) return Eigen::MatrixXd::Identity(m.cols(), m.cols());
@@ -99,14 +92,15 @@ GroupSystem::GroupSystem(int members, const std::vector<TrainRow>& rows) {
   std::vector<double> rhs;
   for (int r : groups_.kept) {
     Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(count);
-    double size = 0;  // the terms before they cancel
+    Eigen::RowVectorXd size = Eigen::RowVectorXd::Zero(count);  // the terms before they cancel
     for (auto [j, v] : rows[r].coeffs) {
       row(groups_.group[j]) += v * groups_.factor[j];
-      size += std::abs(v * groups_.factor[j]);
+      size(groups_.group[j]) += std::abs(v * groups_.factor[j]);
     }
-    // A row whose members all turn in one proportion cancels to round-off: redundant.
-    for (double& x : row)
-      if (std::abs(x) <= kCancelled * size) x = 0.0;
+    // Members of one group in one row (a planet meshing a gear its carrier's shaft turns)
+    // may cancel to round-off: then the group is not in the row.
+    for (int g = 0; g < count; ++g)
+      if (std::abs(row(g)) <= kCancelled * size(g)) row(g) = 0.0;
     reduced.push_back(row);
     rhs.push_back(0.0);
   }
@@ -129,14 +123,36 @@ GroupSystem::GroupSystem(int members, const std::vector<TrainRow>& rows) {
     a_.row(r) = reduced[r];
     b_(r) = rhs[r];
   }
+  // A group's scale comes from the meshes that tie it to others (its input row, when it has
+  // one, is a row of its own): the sun at the end of a 1e12 reducer meets its planet with
+  // an entry z_sun w_sun / w_p0 = 5e-11 that must not fall under the rank threshold.
   scale_ = Eigen::VectorXd::Ones(count);
   for (int g = 0; g < count; ++g) {
-    const double largest = n ? a_.col(g).cwiseAbs().maxCoeff() : 0.0;
+    double largest = kinematic_rows_ ? a_.col(g).head(kinematic_rows_).cwiseAbs().maxCoeff() : 0;
+    if (largest == 0 && n) largest = a_.col(g).cwiseAbs().maxCoeff();
     if (largest > 0) {
       scale_(g) = largest;
       a_.col(g) /= largest;
     }
   }
+  // Groups the kept rows tie together share a component: rest is judged within it.
+  component_.resize(count);
+  for (int g = 0; g < count; ++g) component_[g] = g;
+  const auto root = [&](int g) {
+    while (component_[g] != g) g = component_[g];
+    return g;
+  };
+  for (size_t r = 0; r < groups_.kept.size(); ++r) {
+    int first = -1;
+    for (int g = 0; g < count; ++g) {
+      if (a_(r, g) == 0.0) continue;
+      if (first < 0)
+        first = root(g);
+      else
+        component_[root(g)] = first;
+    }
+  }
+  for (int g = 0; g < count; ++g) component_[g] = root(g);
   for (int r = 0; r < n; ++r) {
     const double norm = a_.row(r).norm();
     if (norm > 0) {
@@ -153,10 +169,53 @@ int GroupSystem::Rank(int top) const {
   return static_cast<int>(lu.rank());
 }
 
+// Scaled group speeds below kRestFraction of the largest of their component are round-off
+// of rest (a held ring's planet mesh, say); a sub-train apart is no measure of them.
+Eigen::VectorXd GroupSystem::Rest(Eigen::VectorXd y) const {
+  std::vector<double> largest(y.size(), 0.0);
+  for (int g = 0; g < y.size(); ++g)
+    largest[component_[g]] = std::max(largest[component_[g]], std::abs(y(g)));
+  for (int g = 0; g < y.size(); ++g)
+    if (std::abs(y(g)) < kRestFraction * largest[component_[g]]) y(g) = 0.0;
+  return y;
+}
+
+// The rows of one group only (inputs, locked loops) fix it outright; the others follow from
+// the kept rows, solved per component with the fixed groups on the right-hand side, so that
+// neither a fast sub-train beside it nor a fast input in its own component blurs a slow
+// group by their round-off.
 Eigen::VectorXd GroupSystem::Solve(int top) const {
-  if (top == 0) return Eigen::VectorXd::Zero(groups_.count);
-  if (top == rows()) return Rest(a_.colPivHouseholderQr().solve(b_));
-  return Rest(a_.topRows(top).completeOrthogonalDecomposition().solve(b_.head(top)));
+  const int count = groups_.count;
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(count);
+  std::vector<bool> known(count, false);
+  const int kept = static_cast<int>(groups_.kept.size());
+  for (int r = kept; r < top; ++r) {
+    int g = 0;
+    a_.row(r).cwiseAbs().maxCoeff(&g);
+    if (known[g]) continue;  // a repeat, reported by the rank test
+    y(g) = b_(r) / a_(r, g);
+    known[g] = true;
+  }
+  for (int c = 0; c < count; ++c) {
+    if (component_[c] != c) continue;
+    std::vector<int> unknown, fixed, rows;
+    for (int g = 0; g < count; ++g)
+      if (component_[g] == c) (known[g] ? fixed : unknown).push_back(g);
+    if (unknown.empty()) continue;
+    for (int r = 0; r < std::min(kept, top); ++r)
+      if (std::any_of(unknown.begin(), unknown.end(), [&](int g) { return a_(r, g) != 0.0; }))
+        rows.push_back(r);
+    if (rows.empty()) continue;
+    Eigen::MatrixXd m(rows.size(), unknown.size());
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(rows.size());
+    for (size_t i = 0; i < rows.size(); ++i) {
+      for (size_t k = 0; k < unknown.size(); ++k) m(i, k) = a_(rows[i], unknown[k]);
+      for (int g : fixed) rhs(i) -= a_(rows[i], g) * y(g);
+    }
+    const Eigen::VectorXd x = m.completeOrthogonalDecomposition().solve(rhs);
+    for (size_t k = 0; k < unknown.size(); ++k) y(unknown[k]) = x(k);
+  }
+  return Rest(y);
 }
 
 std::vector<double> GroupSystem::Speeds(const Eigen::VectorXd& y) const {

@@ -28,8 +28,11 @@ MemberGroups GroupMembers(int members, const std::vector<TrainRow>& rows, int ki
 
 // The train's system in the group speeds: the rows of three or more members, a row u = 0
 // per group a loop locks (the kinematic rows), then one row per input. Column g is scaled
-// by its largest entry (y_g = scale_g u_g) and every row to unit norm, so the rank tests
-// and the solve see a system of unit scale whatever the train's ratio.
+// by its largest entry in the kinematic rows (y_g = scale_g u_g) and every row to unit
+// norm, so the rank tests see a system of unit scale whatever the train's ratio. The solve
+// takes the driven (and locked) groups as known and solves the others per component (the
+// groups the kept rows tie together), so a slow group is not blurred by the round-off of a
+// fast one.
 class GroupSystem {
  public:
   // `rows`: the kinematic rows (meshes, shafts) first, then the inputs.
@@ -48,7 +51,10 @@ class GroupSystem {
   Eigen::MatrixXd Kernel() const;       // kernel of the whole system (columns)
 
  private:
+  Eigen::VectorXd Rest(Eigen::VectorXd y) const;
+
   MemberGroups groups_;
+  std::vector<int> component_;  // per group: the groups the kept rows tie it to share one
   Eigen::MatrixXd a_;
   Eigen::VectorXd b_;
   Eigen::VectorXd scale_;

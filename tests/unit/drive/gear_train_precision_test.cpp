@@ -119,6 +119,31 @@ TEST(GearTrainPrecision, PlanetaryFollowedByTenStagesIsExact) {
   EXPECT_LT(t.power_residual, 1e-12);
 }
 
+TEST(GearTrainPrecision, TwelveStagesIntoAPlanetaryAreExact) {
+  // p0 at 1 rad/s through twelve 10 -> 100 stages: g12 at 1e-12 rad/s drives the sun (50) on
+  // its shaft; ring 90 held: arm at 1e-12 / 2.8 (seed 001 Table 1.1). Beside it, a pair
+  // A (20) - B (40) driven at 1e4 rad/s, on its own: B at -5e3 rad/s.
+  GearTrainSpec s = Chain(12, 10, 100, 1.0);
+  s.members[s.Index("g12")].shaft = "sun_shaft";
+  s.members.push_back(Gear("sun", 50, "sun_shaft"));
+  s.members.push_back(Gear("planet", 20, "", "arm"));
+  s.members.push_back(Gear("ring", 90));
+  s.members.back().speed = 0.0;
+  s.members.push_back(Arm("arm"));
+  s.members.push_back(Gear("A", 20));
+  s.members.back().speed = 1e4;
+  s.members.push_back(Gear("B", 40));
+  s.meshes.push_back(Mesh("sun", "planet"));
+  s.meshes.push_back(Mesh("planet", "ring", MeshKind::kInternal));
+  s.meshes.push_back(Mesh("A", "B"));
+  s.output = "arm";
+  const TrainSolution r = SolveGearTrain(s);
+  ExpectRelative(r.speed[s.Index("arm")], 1e-12 / 2.8, "arm");
+  ExpectRelative(*r.train_value, 1e-12 / 2.8, "train value");
+  ExpectRelative(r.speed[s.Index("B")], -5e3, "B");
+  EXPECT_EQ(r.speed[s.Index("ring")], 0.0);
+}
+
 TEST(GearTrainPrecision, TorquesOfATwelveStageTrainBalanceExactly) {
   // T_out = -T_in / train value = -1 / (-0.1)^12 = -1e12 N m per N m on p0; T w sums to 0.
   const GearTrainSpec s = Chain(12, 10, 100, 1.0);
