@@ -25,8 +25,9 @@
 // are products of tooth ratios along those relations; only the meshes on carriers (Willis)
 // and the inputs are solved as a linear system, in one speed per such group, scaled to
 // unit size. So every speed is exact to round-off (about 1e-15 relative for 20 stages)
-// whatever the ratio. A group whose scaled speed is below 1e-12 times the largest is
-// round-off of rest and returned as exactly 0, with all its members.
+// whatever the ratio. A group whose scaled speed is below 1e-12 times the largest of the
+// groups carrier meshes tie it to is round-off of rest and returned as exactly 0, with all
+// its members.
 #pragma once
 
 #include <optional>
