@@ -15,6 +15,13 @@
 
 namespace tehl {
 namespace {
+
+// prefix + k (appended: GCC 12 warns falsely of overlapping copies for "literal" + string).
+std::string Name(const char* prefix, int k) {
+  std::string s = prefix;
+  s += std::to_string(k);
+  return s;
+}
 using testing::Arm;
 using testing::Gear;
 using testing::Mesh;
@@ -27,13 +34,13 @@ GearTrainSpec Chain(int stages, int z_in, int z_out, double w_in) {
   s.members.push_back(Gear("p0", z_in));
   s.members.back().speed = w_in;
   for (int k = 1; k <= stages; ++k) {
-    const std::string shaft = "s" + std::to_string(k);
-    s.members.push_back(Gear("g" + std::to_string(k), z_out, shaft));
-    if (k < stages) s.members.push_back(Gear("p" + std::to_string(k), z_in, shaft));
-    s.meshes.push_back(Mesh("p" + std::to_string(k - 1), "g" + std::to_string(k)));
+    const std::string shaft = Name("s", k);
+    s.members.push_back(Gear(Name("g", k), z_out, shaft));
+    if (k < stages) s.members.push_back(Gear(Name("p", k), z_in, shaft));
+    s.meshes.push_back(Mesh(Name("p", k - 1), Name("g", k)));
   }
   s.input = "p0";
-  s.output = "g" + std::to_string(stages);
+  s.output = Name("g", stages);
   return s;
 }
 
@@ -51,8 +58,7 @@ TEST(GearTrainPrecision, NineStagesOfTenToOneAreSolvedNotLocked) {
     const double value = std::pow(-0.1, stages);
     ExpectRelative(*r.train_value, value, std::to_string(stages) + " stages, train value");
     for (int k = 1; k <= stages; ++k)
-      ExpectRelative(r.speed[s.Index("g" + std::to_string(k))], 314.0 * std::pow(-0.1, k),
-                     "g" + std::to_string(k));
+      ExpectRelative(r.speed[s.Index(Name("g", k))], 314.0 * std::pow(-0.1, k), Name("g", k));
   }
 }
 
@@ -72,14 +78,13 @@ TEST(GearTrainPrecision, FiveWormStagesGiveTenToTheTen) {
   s.members.back().worm_hand = WormHand::kRight;
   s.members.back().speed = 314.0;
   for (int k = 1; k <= 5; ++k) {
-    const std::string shaft = "s" + std::to_string(k);
-    s.members.push_back(Gear("wh" + std::to_string(k), 100, shaft));
+    const std::string shaft = Name("s", k);
+    s.members.push_back(Gear(Name("wh", k), 100, shaft));
     if (k < 5) {
-      s.members.push_back(Gear("w" + std::to_string(k), 1, shaft));
+      s.members.push_back(Gear(Name("w", k), 1, shaft));
       s.members.back().worm_hand = WormHand::kRight;
     }
-    s.meshes.push_back(
-        Mesh("w" + std::to_string(k - 1), "wh" + std::to_string(k), MeshKind::kWorm));
+    s.meshes.push_back(Mesh(Name("w", k - 1), Name("wh", k), MeshKind::kWorm));
   }
   s.input = "w0";
   s.output = "wh5";
