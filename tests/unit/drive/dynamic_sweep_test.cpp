@@ -15,11 +15,7 @@
 namespace tehl {
 namespace {
 
-// Resonance speed: f_m = z1 n / 60 = f_n  ->  n = 60 f_n / z1 [rpm].
-double ResonanceRpm(const testing::Seed000Dynamics& d) {
-  const TorsionalModel m(*d.mesh, d.params);
-  return 60.0 * m.natural_frequency_hz() / d.pair.pinion().teeth;
-}
+using testing::ResonanceRpm;
 
 std::vector<double> Speeds(double from, double to, double step) {
   std::vector<double> v;

@@ -171,12 +171,7 @@ TEST(GearTrainPrecision, RedundantTwinCountershaftsAreAcceptedAndExact) {
   ExpectRelative(r.speed[s.Index("D")], 1.0, "D");
   // One tooth less on D2's path: the paths disagree and hold everything at rest.
   s.members[4].teeth = 16;
-  std::string m;
-  try {
-    SolveGearTrain(s);
-  } catch (const InputError& e) {
-    m = e.what();
-  }
+  const std::string m = testing::Message(s);
   EXPECT_NE(m.find("locked"), std::string::npos) << m;
 }
 
@@ -189,12 +184,7 @@ TEST(GearTrainPrecision, TriangleAtTheEndOfAHighRatioChainIsStillLocked) {
   s.meshes.push_back(Mesh("g9", "X"));
   s.meshes.push_back(Mesh("X", "Y"));
   s.meshes.push_back(Mesh("Y", "g9"));
-  std::string m;
-  try {
-    SolveGearTrain(s);
-  } catch (const InputError& e) {
-    m = e.what();
-  }
+  const std::string m = testing::Message(s);
   EXPECT_NE(m.find("locked"), std::string::npos) << m;
 }
 

@@ -247,14 +247,7 @@ TEST(GearTrain, RevertedTrainValueIsTheProductOfStageRatios) {
   EXPECT_NEAR(*SolveGearTrain(s).train_value, (20.0 / 40.0) * (25.0 / 35.0), 1e-12);
 }
 
-std::string Message(const GearTrainSpec& s) {
-  try {
-    SolveGearTrain(s);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::Message;
 
 TEST(GearTrain, UnderDeterminedTrainNamesTheFreeMembers) {
   GearTrainSpec s = Example26();

@@ -40,4 +40,10 @@ struct Seed000Dynamics {
   TorsionalParameters params;
 };
 
+// Resonance speed: f_m = z1 n / 60 = f_n  ->  n = 60 f_n / z1 [rpm].
+inline double ResonanceRpm(const Seed000Dynamics& d) {
+  const TorsionalModel m(*d.mesh, d.params);
+  return 60.0 * m.natural_frequency_hz() / d.pair.pinion().teeth;
+}
+
 }  // namespace tehl::testing

@@ -15,10 +15,7 @@
 namespace tehl {
 namespace {
 
-double ResonanceRpm(const testing::Seed000Dynamics& d) {
-  const TorsionalModel m(*d.mesh, d.params);
-  return 60.0 * m.natural_frequency_hz() / d.pair.pinion().teeth;
-}
+using testing::ResonanceRpm;
 
 std::vector<double> Speeds(double from, double to, int n) {
   std::vector<double> v;

@@ -11,6 +11,7 @@
 #include "tehl/drive/gear_train.hpp"
 #include "tehl/error.hpp"
 #include "unit/cli/run_tehl.hpp"
+#include "unit/drive/train_report_run.hpp"
 #include "unit/drive/train_spec_builders.hpp"
 
 namespace tehl {
@@ -18,14 +19,7 @@ namespace {
 using testing::Gear;
 using testing::Mesh;
 
-std::string Message(const GearTrainSpec& s) {
-  try {
-    SolveGearTrain(s);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::Message;
 
 // Every problem of a train file, its path replaced by F.
 std::string Problems(const std::string& text) {
@@ -42,14 +36,7 @@ std::string Problems(const std::string& text) {
   return m;
 }
 
-std::string Report(const std::string& text, int* code) {
-  const std::string path = testing::UniqueTempPath("train.toml");
-  std::ofstream(path) << text;
-  const auto r = testing::RunTehl("train '" + path + "'");
-  std::remove(path.c_str());
-  *code = r.exit_code;
-  return r.out + r.err;
-}
+using testing::TrainReport;
 
 // An internal pair's ring (b) holds the gear inside it (a) at the centre distance
 // m (z_b - z_a)/2: with z_a = 20 and z_b = 18 that is -m, no place at all; a ring named as
@@ -120,15 +107,15 @@ TEST(TrainChecks, InternalPairWithFewerThanTenTeethDifferenceGetsANote) {
   // tips (no trochoid interference) when z_ring - z_pinion > 9. 20 in 22: a note, and the
   // speeds as ever: w_r = 1000 (20/22) = 909.091 rpm.
   int code = -1;
-  std::string out = Report(InternalPair(20, 22), &code);
+  std::string out = TrainReport(InternalPair(20, 22), &code);
   EXPECT_EQ(code, 0) << out;
   EXPECT_NE(out.find("909.091"), std::string::npos) << out;
   EXPECT_NE(out.find("[mesh.pr]: ring r has only 2 teeth more than p inside it"), std::string::npos)
       << out;
   EXPECT_NE(out.find("difference of at least 10"), std::string::npos) << out;
-  out = Report(InternalPair(20, 29), &code);
+  out = TrainReport(InternalPair(20, 29), &code);
   EXPECT_NE(out.find("has only 9 teeth more"), std::string::npos) << out;
-  out = Report(InternalPair(20, 30), &code);
+  out = TrainReport(InternalPair(20, 30), &code);
   EXPECT_EQ(code, 0) << out;
   EXPECT_EQ(out.find("Notes:"), std::string::npos) << out;
 }

@@ -12,6 +12,7 @@
 #include "tehl/error.hpp"
 #include "tehl/units.hpp"
 #include "unit/cli/run_tehl.hpp"
+#include "unit/drive/train_report_run.hpp"
 
 namespace tehl {
 namespace {
@@ -200,14 +201,7 @@ std::string Example27(int z2,
          "[mesh.4-7]\na = \"4\"\nb = \"7\"\nkind = \"internal\"\n";
 }
 
-std::string Report(const std::string& text, int* code) {
-  const std::string path = testing::UniqueTempPath("train.toml");
-  std::ofstream(path) << text;
-  const auto r = testing::RunTehl("train '" + path + "'");
-  std::remove(path.c_str());
-  *code = r.exit_code;
-  return r.out + r.err;
-}
+using testing::TrainReport;
 
 TEST(TrainFile, CompoundPlanetStepsMustShareTheirCentreDistance) {
   // Module 2 mm everywhere, gear 3 at 40 teeth: the 2-3 mesh puts the planet shaft at
@@ -236,7 +230,7 @@ TEST(TrainFile, EveryPlanetGearKeepsTheTipClearanceOfTheDeclaredCount) {
   // 3 planets pass; without modules the steps' centre distances are not compared, and the
   // report says so.
   int code = -1;
-  const std::string out = Report(Example27(12, 36, "", "planets = 3\n"), &code);
+  const std::string out = TrainReport(Example27(12, 36, "", "planets = 3\n"), &code);
   EXPECT_EQ(code, 0) << out;
   EXPECT_NE(out.find("are not compared (no module_m on every step)"), std::string::npos) << out;
   EXPECT_NE(out.find("declared 3: fits the rules checked"), std::string::npos) << out;
@@ -322,7 +316,7 @@ TEST(TrainCommand, PermanentMagnetMotorHasNoFieldToReport) {
       "supply_voltage_v = 24.0\narmature_resistance_ohm = 0.5\nspeed_constant = 0.05\n"
       "rated_current_a = 10.0\nspeed_command_rpm = 1000.0\n[load]\ntorque_nm = 0.5\n";
   int code = -1;
-  const std::string out = Report(text, &code);
+  const std::string out = TrainReport(text, &code);
   EXPECT_EQ(code, 0) << out;
   EXPECT_EQ(out.find("field current"), std::string::npos) << out;
   EXPECT_EQ(out.find("constant power"), std::string::npos) << out;
@@ -332,7 +326,7 @@ TEST(TrainCommand, PermanentMagnetMotorHasNoFieldToReport) {
 TEST(TrainCommand, RackTrainValueCarriesItsUnit) {
   // Pinion 20 teeth, module 2 mm: v = w m z / 2 = 0.02 w, w_R / w_P = 0.02 m/rad.
   int code = -1;
-  const std::string out = Report(
+  const std::string out = TrainReport(
       "[train]\ninput = \"P\"\noutput = \"R\"\n[gear.P]\nteeth = 20\nmodule_m = 0.002\n"
       "speed_rad_s = 10.0\n[rack.R]\n[mesh.PR]\na = \"P\"\nb = \"R\"\nkind = \"rack\"\n",
       &code);

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "tehl/drive/gear_train.hpp"
+#include "tehl/error.hpp"
 
 namespace tehl::testing {
 
@@ -35,6 +36,16 @@ inline TrainMesh Mesh(const std::string& a,
                       const std::string& b,
                       MeshKind k = MeshKind::kExternal) {
   return {a, b, k, false, "mesh." + a + b};
+}
+
+// The message of the input error SolveGearTrain throws for s; "" when it solves.
+inline std::string Message(const GearTrainSpec& s) {
+  try {
+    SolveGearTrain(s);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 }  // namespace tehl::testing
