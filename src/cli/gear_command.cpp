@@ -20,6 +20,7 @@
 #include "scene/gear_case.hpp"
 #include "tehl/ehl/flash_temperature.hpp"
 #include "tehl/error.hpp"
+#include "tehl/gear/flank_phase.hpp"
 #include "tehl/gear/path_of_contact.hpp"
 #include "tehl/gear/tooth_blank.hpp"
 #include "tehl/gear/tooth_profile.hpp"
@@ -189,6 +190,28 @@ void Stiffness(std::ostream& o, const internal::GearCase& c) {
       o << buf;
     } catch (const InputError& e) {
       o << "  " << method << ": not applicable: " << WhyNot(e) << "\n";
+    }
+  }
+  // Asymmetric teeth: the coast flanks' mesh (the pair seen from its coast side,
+  // flank_phase.hpp), which carries the load when the wheel drives back (docs/dynamics.md,
+  // "Back flanks").
+  if (p.spec().coast_pressure_angle_rad != p.spec().drive_pressure_angle_rad &&
+      p.spec().helix_angle_rad == 0 && c.mesh_stiffness != "iso") {
+    try {
+      const GearPair coast(CoastSideSpec(p.spec()));
+      std::shared_ptr<const PairStiffnessModel> owner;
+      const PairStiffnessFn k = internal::MakePairStiffness(coast, c.mesh_stiffness, &owner);
+      const MeshStiffnessSummary m =
+          SummarizeMeshStiffness(PathOfContact(coast, c.operating.pinion_speed_rad_s), k);
+      char buf[200];
+      std::snprintf(buf, sizeof buf,
+                    "  %-18s %12s %12s %12s %12s  (%s, when the wheel drives back)\n",
+                    "coast flanks", per_width(m.mean_n_per_m).c_str(),
+                    per_width(m.min_n_per_m).c_str(), per_width(m.max_n_per_m).c_str(),
+                    per_width(m.single_pair_max_n_per_m).c_str(), c.mesh_stiffness.c_str());
+      o << buf;
+    } catch (const InputError& e) {
+      o << "  coast flanks: not applicable: " << WhyNot(e) << "\n";
     }
   }
   try {

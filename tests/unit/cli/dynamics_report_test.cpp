@@ -35,6 +35,17 @@ TEST(DynamicsReport, AsymmetricTeethStrikeTheirCoastFlanksOnTheirOwnMesh) {
       << g.out;
   EXPECT_NE(r.out.find("contact ratio " + eps[1].str()), std::string::npos) << eps[1] << "\n"
                                                                             << r.out;
+  // `tehl gear` gives the coast flanks' mesh stiffness per unit face width (the gear core's
+  // sampling along the coast path); the dynamics' back-flank mesh (its Chebyshev interpolant)
+  // has the same mean over the 25 mm face.
+  std::smatch gear_mean, dyn_mean;
+  ASSERT_TRUE(std::regex_search(g.out, gear_mean, std::regex("coast flanks +([0-9.]+)"))) << g.out;
+  ASSERT_TRUE(std::regex_search(r.out, dyn_mean,
+                                std::regex("back flanks .*mesh stiffness mean ([0-9.e+]+)")))
+      << r.out;
+  EXPECT_NEAR(std::stod(gear_mean[1]) * 1e6 * 25.0 / std::stod(dyn_mean[1]), 1.0, 1e-3);
+  const RunResult symmetric = RunTehl("gear '" + Case("seed004_sae40") + "'");
+  EXPECT_EQ(symmetric.out.find("coast flanks"), std::string::npos) << symmetric.out;
 }
 
 TEST(DynamicsReport, ContinuationSweepsWriteTheirOwnTablesAndNeedSpeeds) {
