@@ -154,6 +154,40 @@ void Report(std::ostream& o,
   o << buf;
 }
 
+// The period and path tables of the response at the case's speed.
+void WritePeriodTables(std::ostringstream& o,
+                       const fs::path& dir,
+                       const std::string& name,
+                       const internal::GearCase& c,
+                       const DynamicResponse& r) {
+  std::vector<internal::CsvColumn> period(7);
+  const char* ph[] = {"phase_m", "t_s", "x_m", "v_m_s", "force_n", "k_mesh_n_per_m", "state"};
+  for (int i = 0; i < 7; ++i) period[i].header = ph[i];
+  for (const DynamicSample& s : r.samples) {
+    const double v[] = {s.phase_m,
+                        s.time_s,
+                        s.x_m,
+                        s.v_m_s,
+                        s.force_n,
+                        s.stiffness_n_per_m,
+                        static_cast<double>(s.state)};
+    for (int i = 0; i < 7; ++i) period[i].values.push_back(v[i]);
+  }
+  const std::string period_csv = (dir / (name + "_dynamics_period.csv")).string();
+  internal::WriteCsvTable(period_csv, period);
+  std::vector<internal::CsvColumn> path(4);
+  const char* pa[] = {"s_m", "share", "w_static_n_per_m", "w_dynamic_n_per_m"};
+  for (int i = 0; i < 4; ++i) path[i].header = pa[i];
+  for (const PairLoadPoint& q : TrackedPairLoad(r, c.spec.face_width_m, 201)) {
+    const double v[] = {q.s_m, q.share, q.static_n_per_m, q.dynamic_n_per_m};
+    for (int i = 0; i < 4; ++i) path[i].values.push_back(v[i]);
+  }
+  const std::string path_csv = (dir / (name + "_dynamics_path.csv")).string();
+  internal::WriteCsvTable(path_csv, path);
+  o << "wrote " << period_csv << "\nwrote " << path_csv << "\n";
+  std::cout << o.str() << std::flush;
+}
+
 }  // namespace
 
 Command AddDynamicsCommand(CLI::App& app) {
@@ -188,7 +222,9 @@ Command AddDynamicsCommand(CLI::App& app) {
         std::vector<double> speeds;
         if (!args->speeds.empty() || speeds_option->count() > 0) speeds = ParseSpeeds(args->speeds);
         internal::Document doc = internal::ReadCaseDocument(args->case_file);
-        std::optional<internal::GearCase> c = internal::ReadGearCase(doc);
+        // The films' dynamic load (effect dynamic_load) is not this command's: its model runs
+        // at any speed, also where the drive flanks unload.
+        std::optional<internal::GearCase> c = internal::ReadGearCase(doc, false);
         doc.ThrowIfProblems();
         if (!c || !c->pair || !c->pair_stiffness) {
           doc.Problem("gear", "", "the gear pair could not be built", "a valid gear pair");
@@ -209,42 +245,19 @@ Command AddDynamicsCommand(CLI::App& app) {
         std::ostringstream o;
         o << "tehl dynamics: " << args->case_file << "\n";
         Report(o, *c, d, model, r);
-        if (!r.integrator.usable() || r.steps.empty()) {
-          std::cout << o.str();
-          std::fprintf(stderr, "tehl dynamics: the integration failed: %s\n", r.message.c_str());
-          return kExitNotConverged;
+        // No response at the case's speed: no period or path table, exit 1; a sweep asked for
+        // still runs (its speeds are other runs).
+        const bool failed = !r.integrator.usable() || r.steps.empty() || r.diverged;
+        if (failed) {
+          std::cout << o.str() << std::flush;
+          if (r.diverged)
+            std::fprintf(stderr, "tehl dynamics: at the case's speed %s\n", r.message.c_str());
+          else
+            std::fprintf(stderr, "tehl dynamics: the integration failed: %s\n", r.message.c_str());
+          if (speeds.empty()) return kExitNotConverged;
+          std::fprintf(stderr, "tehl dynamics: no period or path table; the sweep goes on\n");
         }
-        if (r.diverged) {
-          std::cout << o.str();
-          std::fprintf(stderr, "tehl dynamics: at the case's speed %s\n", r.message.c_str());
-          return kExitNotConverged;
-        }
-        std::vector<internal::CsvColumn> period(7);
-        const char* ph[] = {"phase_m", "t_s", "x_m", "v_m_s", "force_n", "k_mesh_n_per_m", "state"};
-        for (int i = 0; i < 7; ++i) period[i].header = ph[i];
-        for (const DynamicSample& s : r.samples) {
-          const double v[] = {s.phase_m,
-                              s.time_s,
-                              s.x_m,
-                              s.v_m_s,
-                              s.force_n,
-                              s.stiffness_n_per_m,
-                              static_cast<double>(s.state)};
-          for (int i = 0; i < 7; ++i) period[i].values.push_back(v[i]);
-        }
-        const std::string period_csv = (dir / (name + "_dynamics_period.csv")).string();
-        internal::WriteCsvTable(period_csv, period);
-        std::vector<internal::CsvColumn> path(4);
-        const char* pa[] = {"s_m", "share", "w_static_n_per_m", "w_dynamic_n_per_m"};
-        for (int i = 0; i < 4; ++i) path[i].header = pa[i];
-        for (const PairLoadPoint& q : TrackedPairLoad(r, c->spec.face_width_m, 201)) {
-          const double v[] = {q.s_m, q.share, q.static_n_per_m, q.dynamic_n_per_m};
-          for (int i = 0; i < 4; ++i) path[i].values.push_back(v[i]);
-        }
-        const std::string path_csv = (dir / (name + "_dynamics_path.csv")).string();
-        internal::WriteCsvTable(path_csv, path);
-        o << "wrote " << period_csv << "\nwrote " << path_csv << "\n";
-        std::cout << o.str() << std::flush;
+        if (!failed) WritePeriodTables(o, dir, name, *c, r);
         if (speeds.empty()) return kExitOk;
 
         const bool continuation = args->sweep_start != "static";
@@ -260,6 +273,7 @@ Command AddDynamicsCommand(CLI::App& app) {
             "periods",          "natural_frequency_hz", "resonance_rpm",       "pinion_torque_nm",
             "diverged"};
         for (int i = 0; i < 13; ++i) t[i].header = th[i];
+        for (int i : {7, 8, 12}) t[i].integer = true;  // periodic, periods, diverged
         int not_periodic = 0, diverged = 0;
         for (const SweepPoint& s : sweep) {
           const double v[] = {s.pinion_speed_rpm,
@@ -283,17 +297,18 @@ Command AddDynamicsCommand(CLI::App& app) {
         const std::string tag = continuation ? "_" + args->sweep_start : "";
         const std::string sweep_csv = (dir / (name + "_dynamics_sweep" + tag + ".csv")).string();
         internal::WriteCsvTable(sweep_csv, t);
-        // The largest factor of the periodic responses: one that grows without bound has none.
+        // The largest factor of the responses that stay bounded: one that grows without bound
+        // has none (a bounded response that is not periodic keeps its last period's).
         size_t peak = sweep.size();
         for (size_t i = 0; i < sweep.size(); ++i)
-          if (sweep[i].periodic && (peak == sweep.size() ||
-                                    sweep[i].dynamic_load_factor > sweep[peak].dynamic_load_factor))
+          if (!sweep[i].diverged && (peak == sweep.size() || sweep[i].dynamic_load_factor >
+                                                                 sweep[peak].dynamic_load_factor))
             peak = i;
         const std::string largest =
             peak < sweep.size()
                 ? "largest dynamic load factor " + Fmt("%.4f", sweep[peak].dynamic_load_factor) +
                       " at " + Fmt("%.1f", sweep[peak].pinion_speed_rpm) + " rpm"
-                : std::string("no periodic response");
+                : std::string("no bounded response");
         std::printf("sweep%s: %zu speeds, %s; %d not periodic in one mesh period\nwrote %s\n",
                     continuation ? (" (continuation " + args->sweep_start + ")").c_str() : "",
                     sweep.size(), largest.c_str(), not_periodic, sweep_csv.c_str());
@@ -307,11 +322,13 @@ Command AddDynamicsCommand(CLI::App& app) {
               "larger damping_ratio bounds it; the CSV's diverged column marks them\n",
               diverged, sweep[first].pinion_speed_rpm);
         }
-        if (args->no_plot) return kExitOk;
+        if (args->no_plot) return failed ? kExitNotConverged : kExitOk;
         const std::string png = (dir / (name + "_dynamics" + tag + ".png")).string();
-        const int rc = RunPlot(sweep_csv, png, name);
+        const std::string label =
+            continuation ? name + " (continuation " + args->sweep_start + ")" : name;
+        const int rc = RunPlot(sweep_csv, png, label);
         if (rc == kExitOk) std::printf("wrote %s\n", png.c_str());
-        return rc;
+        return failed && rc == kExitOk ? kExitNotConverged : rc;
       }};
 }
 

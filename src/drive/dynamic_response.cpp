@@ -68,7 +68,7 @@ DynamicSample DynamicResponse::SampleAt(double phase, bool left) const {
   s.x_m = y[0];
   s.v_m_s = y[1];
   s.state = st.state;
-  s.force_n = model->MeshForce(st.state, st.segment, st.back_segment, ph, y[0], y[1]);
+  s.force_n = model->ContactForce(st.state, st.segment, st.back_segment, ph, y[0], y[1]);
   s.stiffness_n_per_m = model->mesh().MeshStiffness(st.segment, ph);
   return s;
 }
@@ -113,6 +113,7 @@ DynamicResponse SolvePeriodicResponse(TorsionalModel& model, const DynamicRespon
                            : -1});
     return true;
   };
+  std::vector<double> size;  // |(x / x_s, x' / (w_n x_s))| at each period's end
   long n = 0;
   for (; n < o.max_periods; ++n) {
     current.clear();
@@ -129,6 +130,7 @@ DynamicResponse SolvePeriodicResponse(TorsionalModel& model, const DynamicRespon
     }
     r.end_x_m = y[0];
     r.end_v_m_s = y[1];
+    size.push_back(std::hypot(y[0] / x_s, y[1] / (wn * x_s)));
     r.periodicity_error =
         std::max(std::abs(y[0] - y_prev[0]) / x_s, std::abs(y[1] - y_prev[1]) / (wn * x_s));
     if (r.periods >= o.min_periods && r.periodicity_error <= o.periodic_tolerance) {
@@ -142,17 +144,35 @@ DynamicResponse SolvePeriodicResponse(TorsionalModel& model, const DynamicRespon
     }
   }
   if (n == o.max_periods) n = o.max_periods - 1;
+  // Out of periods and still growing: the largest size of the last quarter of the periods is
+  // over twice that of the second quarter, and beyond 10 static deflections (a bounded
+  // response that is not periodic, sub-harmonic or chaotic, keeps its size).
+  double grew_from = 0, grew_to = 0;
+  if (!r.periodic && !r.diverged && size.size() >= 8) {
+    const size_t q = size.size() / 4;
+    grew_from = *std::max_element(size.begin() + q, size.begin() + 2 * q);
+    grew_to = *std::max_element(size.end() - q, size.end());
+    r.diverged = grew_to > 2.0 * grew_from && grew_to > 10.0;
+  }
   r.message = r.periodic
                   ? "periodic after " + std::to_string(r.periods) + " mesh periods"
                   : "not periodic in one mesh period after " + std::to_string(r.periods) +
                         " periods (relative change " + std::to_string(r.periodicity_error) + ")";
   if (r.diverged) {
-    char buf[400];
-    std::snprintf(buf, sizeof buf,
-                  "the response grows without bound: |x| = %.3g and |x'| / w_n = %.3g static "
-                  "deflections after %d mesh periods (the mesh's stiffness variation pumps "
-                  "it: parametric instability; corner contact or more damping bound it)",
-                  std::abs(y[0]) / x_s, std::abs(y[1]) / (wn * x_s), r.periods);
+    char buf[480];
+    if (grew_to > 0)
+      std::snprintf(buf, sizeof buf,
+                    "the response grows without bound: still growing after %d mesh periods "
+                    "(its size rose from %.3g to %.3g static deflections over the last half; "
+                    "the mesh's stiffness variation pumps it: parametric instability; corner "
+                    "contact or more damping bound it)",
+                    r.periods, grew_from, grew_to);
+    else
+      std::snprintf(buf, sizeof buf,
+                    "the response grows without bound: |x| = %.3g and |x'| / w_n = %.3g static "
+                    "deflections after %d mesh periods (the mesh's stiffness variation pumps "
+                    "it: parametric instability; corner contact or more damping bound it)",
+                    std::abs(y[0]) / x_s, std::abs(y[1]) / (wn * x_s), r.periods);
     r.message = buf;
   }
   r.steps = std::move(current);
@@ -172,7 +192,7 @@ DynamicResponse SolvePeriodicResponse(TorsionalModel& model, const DynamicRespon
       const double t = st.dense.t0_s + dt * k / o.peak_samples_per_step;
       st.dense.Evaluate(t, yv);
       const double ph = std::clamp(cs * t - n * pb, seg.begin_m, seg.end_m);
-      const double f = model.MeshForce(st.state, st.segment, st.back_segment, ph, yv[0], yv[1]);
+      const double f = model.ContactForce(st.state, st.segment, st.back_segment, ph, yv[0], yv[1]);
       r.peak_force_n = std::max(r.peak_force_n, f);
       r.min_force_n = std::min(r.min_force_n, f);
     }

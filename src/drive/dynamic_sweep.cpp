@@ -25,6 +25,9 @@ std::vector<SweepPoint> SweepSpeeds(const TorsionalMesh& mesh,
     if (start == SweepStart::kContinuation && !carried.empty())
       oi.initial_state = {carried[0], carried[1] * speeds_rpm[i] / carried_rpm};
     const DynamicResponse r = SolvePeriodicResponse(model, oi);
+    // A speed without a periodic response hands on nothing: the next starts from the static
+    // deflection again (not from an orbit further back).
+    if (start == SweepStart::kContinuation) carried.clear();
     if (start == SweepStart::kContinuation && r.periodic) {
       carried = {r.end_x_m, r.end_v_m_s};
       carried_rpm = speeds_rpm[i];

@@ -119,6 +119,14 @@ double TorsionalModel::MeshForce(
   return BackFlankForce(*back, back_seg, std::clamp(q, b.begin_m, b.end_m), x, v);
 }
 
+double TorsionalModel::ContactForce(
+    ContactState s, int seg, int back_seg, double phase, double x, double v) const {
+  const double f = MeshForce(s, seg, back_seg, phase, x, v);
+  if (s == ContactState::kDriveFlank) return std::max(0.0, f);
+  if (s == ContactState::kBackFlank) return std::min(0.0, f);
+  return 0.0;
+}
+
 double TorsionalModel::MeshForce(ContactState s, int seg, double phase, double x, double v) const {
   switch (s) {
     // Flanks in contact push and never pull: when the flanks part faster than the teeth

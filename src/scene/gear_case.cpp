@@ -203,7 +203,7 @@ PairStiffnessFn MakePairStiffness(const GearPair& pair,
   return [raw](double r1, double r2) { return raw->PairStiffness(r1, r2); };
 }
 
-std::optional<GearCase> ReadGearCase(Document& doc) {
+std::optional<GearCase> ReadGearCase(Document& doc, bool with_dynamic_load) {
   const bool gear =
       doc.HasSection("gear") || doc.HasSection("gear.pinion") || doc.HasSection("gear.wheel");
   if (!gear) {
@@ -330,7 +330,7 @@ std::optional<GearCase> ReadGearCase(Document& doc) {
     c.corner_contact = std::make_shared<const CornerContact>(pair, Flank::kDrive, CornerMaxGap(c));
   if (!CheckTipReliefKeys(doc, c, path.length_m())) return c;
   if (c.tip_relief.Active() && c.pair_stiffness) FindLoadedPath(doc, c);
-  if (doc.Bool("effects", "dynamic_load")) {
+  if (with_dynamic_load && doc.Bool("effects", "dynamic_load")) {
     c.dynamic_load = MakeDynamicLoad(doc, c);
     if (c.dynamic_load && !c.dynamic_load->response().periodic)
       c.warnings.push_back({"effects", "dynamic_load",

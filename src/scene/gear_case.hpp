@@ -76,8 +76,10 @@ struct GearCase {
 
 // Builds the gear case from a document read by ReadCaseDocument. Problems go into `doc`
 // (call doc.ThrowIfProblems() afterwards). Returns nothing when the document has no gear
-// pair or its gear keys are already in error.
-std::optional<GearCase> ReadGearCase(Document& doc);
+// pair or its gear keys are already in error. `with_dynamic_load` = false leaves out the
+// `dynamic_load` effect (the films' dynamic load and its checks): `tehl dynamics` solves the
+// torsional model itself, at any speed, also where the films could not carry the load.
+std::optional<GearCase> ReadGearCase(Document& doc, bool with_dynamic_load = true);
 
 // The stiffness of one pair by `method` for this pair; throws InputError (key
 // gear.mesh_stiffness) when the method does not apply. "iso": constant c' b.

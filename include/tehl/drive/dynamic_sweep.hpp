@@ -2,9 +2,9 @@
 //
 // Each speed's periodic response (dynamic_response.hpp) starts either from the static
 // deflection (the default: every speed on its own, in parallel) or, by continuation, from the
-// periodic response of the speed before it in the order given (the last periodic one: a
-// speed whose response is not periodic hands on nothing): (x, x') at phase 0 with x'
-// scaled by the speed ratio (the orbit keeps its shape in the phase, dx/dphi, as the speed
+// periodic response of the speed before it in the order given (a speed whose response is not
+// periodic hands on nothing: the next starts from the static deflection): (x, x') at phase 0
+// with x' scaled by the speed ratio (the orbit keeps its shape in the phase, dx/dphi, as the speed
 // changes a little). Where the response has two stable branches (a mesh that strikes its back
 // flanks or separates is a hardening or softening spring; the resonance jumps) continuation
 // follows the branch it is on through the jump, upwards or downwards, and the static start

@@ -95,6 +95,15 @@ class TorsionalModel : public HybridOdeSystem {
   // Mesh force (eqs. 4.37-4.42) in a given state and segment at phase phi [N]: on the back
   // flanks their contact force F_c with the sign of x (-F_c), which acts on x as K F_c.
   double MeshForce(ContactState state, int segment, double phase_m, double x_m, double v_m_s) const;
+  // The contact force as the results report it: MeshForce (with the back flanks' segment)
+  // held to the push of the flanks in contact, >= 0 on the drive flanks and <= 0 on the back
+  // flanks (MeshForce itself continues past a guard, at x = 0 say, for the event location).
+  double ContactForce(ContactState state,
+                      int segment,
+                      int back_segment,
+                      double phase_m,
+                      double x_m,
+                      double v_m_s) const;
   // The same with the back flanks' segment given (a step's own mode, so that a step ending on
   // one of their switches sees its own side of it; -1: the segment holding the back phase).
   double MeshForce(ContactState state,

@@ -98,6 +98,34 @@ TEST(DynamicsReport, AResponseGrowingWithoutBoundIsNamedAndLeftOutOfThePeak) {
   EXPECT_EQ(f.exit_code, 1) << f.out << f.err;
   EXPECT_NE(f.err.find("at the case's speed the response grows without bound"), std::string::npos)
       << f.err;
+  // A sweep asked for still runs (its speeds are other runs); the exit stays 1.
+  const RunResult fs =
+      RunTehl("dynamics '" + fast + "' --speeds 6000:6200:100 --no-plot -o '" + out + "'");
+  ASSERT_TRUE(fs.exited);
+  EXPECT_EQ(fs.exit_code, 1) << fs.out << fs.err;
+  EXPECT_NE(fs.out.find("sweep: 3 speeds"), std::string::npos) << fs.out;
+  EXPECT_TRUE(std::ifstream(out + "/nocorner_fast_dynamics_sweep.csv").good());
+}
+
+// The films' dynamic load (effect dynamic_load) cannot be carried where the drive flanks
+// unload; `tehl run` refuses such a case, and the message sends the user to `tehl dynamics`,
+// which therefore runs it: the resonance case with damping 0.02 separates over about a third
+// of its period.
+TEST(DynamicsReport, RunsACaseWhoseFilmsCouldNotCarryTheDynamicLoad) {
+  const ScratchDir dir("tehl_dyn_report");
+  std::ifstream in(Case("seed004_sae40_dynamic_resonance"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text = std::regex_replace(text, std::regex("name = \"sae40\""),
+                            "name = \"" TEHL_SOURCE_DIR "/lubricants/sae40.toml\"");
+  text = std::regex_replace(text, std::regex("damping_ratio = 0.15"), "damping_ratio = 0.02");
+  const std::string path = dir.Path("separating.toml");
+  std::ofstream(path) << text;
+  const RunResult check = RunTehl("case --check '" + path + "'");
+  EXPECT_EQ(check.exit_code, 2) << check.out << check.err;  // the films' case is refused
+  const RunResult r = RunTehl("dynamics '" + path + "' --no-plot -o '" + dir.Path("out") + "'");
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("min F = 0.0000 N; separated"), std::string::npos) << r.out;
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "tehl/drive/dynamic_response.hpp"
+#include "tehl/drive/dynamic_sweep.hpp"
 #include "tehl/gear/flank_phase.hpp"
 #include "tehl/gear/potential_energy_stiffness.hpp"
 #include "unit/drive/seed000_dynamics.hpp"
@@ -281,6 +282,32 @@ TEST(BackFlanks, APumpedPiecewiseLinearMeshIsReportedAsGrowingWithoutBound) {
   }
   EXPECT_GT(diverged, 0);
   EXPECT_GE(only_piecewise, 3);
+
+  // Out of periods before 1000 static deflections, still growing: named as growing too (at
+  // 1.06 n_r the size passes 1000 x_s after about 40 periods; 24 periods stop short of it).
+  p.pinion_speed_rad_s = RpmToRadPerS(1.06 * nr);
+  DynamicResponseOptions short_run;
+  short_run.max_periods = 24;
+  TorsionalModel m(a.mesh, p);
+  const DynamicResponse r = SolvePeriodicResponse(m, short_run);
+  EXPECT_TRUE(r.diverged) << r.message;
+  EXPECT_NE(r.message.find("still growing after 24 mesh periods"), std::string::npos) << r.message;
+  // A bounded response that is not periodic within its periods is not growing.
+  p.pinion_speed_rad_s = RpmToRadPerS(0.96 * nr);
+  TorsionalModel b(a.mesh, p);
+  const DynamicResponse rb = SolvePeriodicResponse(b, DynamicResponseOptions{});
+  EXPECT_FALSE(rb.periodic) << rb.message;
+  EXPECT_FALSE(rb.diverged) << rb.message;
+
+  // A continuation sweep hands nothing on from a speed that grows without bound: the next
+  // speed starts from the static deflection, as a static sweep's does.
+  p.pinion_speed_rad_s = 0;
+  const std::vector<double> speeds = {1.16 * nr, 1.18 * nr};
+  const std::vector<SweepPoint> cont =
+      SweepSpeeds(a.mesh, p, speeds, DynamicResponseOptions{}, 1, SweepStart::kContinuation);
+  const std::vector<SweepPoint> stat = SweepSpeeds(a.mesh, p, speeds, DynamicResponseOptions{});
+  ASSERT_TRUE(cont[0].diverged);
+  EXPECT_EQ(cont[1].dynamic_load_factor, stat[1].dynamic_load_factor);
 }
 
 }  // namespace

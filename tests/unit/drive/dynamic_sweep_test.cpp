@@ -89,6 +89,11 @@ TEST(DynamicSweep, LightDampingSeparatesTheTeethNearResonance) {
               r.separated_fraction, r.back_flank_fraction, r.min_force_n, r.peak_force_n);
   EXPECT_GT(r.separated_fraction, 0.01);
   EXPECT_FALSE(r.contact_loss_times_s.empty());
+  // The teeth part (50 um of backlash) but never strike the back flanks: the smallest contact
+  // force is 0, not the damper's pull at the instant of parting (x = 0, x' < 0).
+  ASSERT_EQ(r.back_flank_fraction, 0.0);
+  EXPECT_EQ(r.min_force_n, 0.0);
+  for (const DynamicSample& s : r.samples) EXPECT_GE(s.force_n, 0.0) << "phase " << s.phase_m;
   int zero = 0;
   for (const DynamicSample& s : r.samples)
     zero += s.state == ContactState::kSeparated && s.force_n == 0;
