@@ -138,8 +138,14 @@ class DocumentReader {
       const KeySpec* k = spec ? spec->Find(key) : nullptr;
       if (!k) {
         if (v.is_table()) {
-          Add(vline, "[" + full + "]", "", "unknown section",
-              "known sections: " + JoinNames(ChildSections(name)));
+          const std::vector<std::string> sections = ChildSections(name);  // "[name]"
+          std::vector<std::string> bare;
+          for (const std::string& c : sections) bare.push_back(c.substr(1, c.size() - 2));
+          const std::string near = NearestName(full, bare);
+          Add(vline, "[" + full + "]", "",
+              near.empty() ? std::string("unknown section")
+                           : "unknown section (did you mean [" + near + "]?)",
+              "known sections: " + JoinNames(sections));
         } else {
           std::vector<std::string> known;
           if (spec)

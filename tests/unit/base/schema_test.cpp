@@ -66,6 +66,19 @@ TEST(Schema, ReportsEveryProblemWithFileLineKeyAndValue) {
   EXPECT_THROW(d.ThrowIfProblems(), InputError);
 }
 
+TEST(Schema, AMisspeltSectionIsGivenItsNearestName) {
+  // "[bodi]" is one letter from the schema's [body]; "[other]" is near nothing.
+  const Schema s = TestSchema();
+  Document d = Document::ReadString(s, "[body]\nradius_m = 1.0\n[bodi]\n[other]\n", "m.toml");
+  std::vector<std::string> got;
+  for (const auto& p : d.problems()) got.push_back(p.ToString());
+  ASSERT_EQ(got.size(), 2u) << ::testing::PrintToString(got);
+  EXPECT_NE(got[0].find("m.toml:3: [bodi]: unknown section (did you mean [body]?)"),
+            std::string::npos)
+      << got[0];
+  EXPECT_EQ(got[1].find("did you mean"), std::string::npos) << got[1];
+}
+
 TEST(Schema, MissingRequiredSectionAndKeyAreReported) {
   const Schema s = TestSchema();
   Document d = Document::ReadString(s, "title = \"x\"\n", "m.toml");
