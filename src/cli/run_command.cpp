@@ -16,6 +16,7 @@
 #include "scene/case_reader.hpp"
 #include "tehl/scene/contact_scene.hpp"
 #include "tehl/scene/mesh_cycle_scene.hpp"
+#include "tehl/scene/path_point_case.hpp"
 #include "tehl/units.hpp"
 
 namespace tehl::cli {
@@ -35,6 +36,7 @@ struct RunArgs {
   bool quiet = false;
   bool resume = false;
   int checkpoint_every = 10;
+  std::string at;  // --at: the steady film at this point of a gear's path
 };
 
 int RunGear(const RunArgs& a) {
@@ -143,7 +145,20 @@ int RunContact(const RunArgs& a) {
   ContactRunOptions o;
   o.quiet = a.quiet;
   o.output_dir = a.output_dir;
-  const ContactRunResult r = RunContactCase(a.case_path, o);
+  std::string case_path = a.case_path;
+  if (!a.at.empty()) {  // the point's [contact] case, written beside its results
+    const PathPointCase p = WriteContactCaseAtPoint(a.case_path, a.at, a.output_dir);
+    std::printf(
+        "steady film at %s: s = %.4g mm from A (A..E = %.4g mm), %d pair(s) in contact\n"
+        "  R = %.6g m, u1 = %.6g m/s, u2 = %.6g m/s (SRR %+.4f), w = %.6g N/m (%.4f F_bt/b)\n"
+        "  case: %s\n",
+        p.label.c_str(), p.s_m * 1e3, p.path_length_m * 1e3, p.pairs_in_contact, p.reduced_radius_m,
+        p.u1_m_s, p.u2_m_s, p.srr, p.load_n_per_m, p.load_share, p.case_path.c_str());
+    std::fflush(stdout);  // before the solve's progress lines on stderr
+    case_path = p.case_path;
+    o.output_dir.clear();  // the written case names its folder
+  }
+  const ContactRunResult r = RunContactCase(case_path, o);
   const auto& last = r.steps.back();
   std::printf("grid %d nodes (%s)\n", r.grid_points, r.grid_rule.c_str());
   if (!last.summary.usable())
@@ -227,7 +242,13 @@ Command AddRunCommand(CLI::App& app) {
   sub->add_option("--checkpoint-every", args->checkpoint_every,
                   "Mesh cycle: write a checkpoint every N steps (0 = never)")
       ->check(CLI::Range(0, 10000000));
+  sub->add_option("--at", args->at,
+                  "Gear case: the steady film at one point of the path instead of the cycle: A, "
+                  "B, C, D, E or a distance from A (2.5mm); writes NAME_at_POINT.toml, the "
+                  "[contact] case of that point, beside its results")
+      ->excludes("--resume");
   return {sub, [args]() {
+            if (!args->at.empty()) return RunContact(*args);
             // The scene is chosen by the section the file has; each scene reports every
             // problem of its own (a file with neither section is reported by the contact
             // scene, which names both).

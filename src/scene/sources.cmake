@@ -9,6 +9,7 @@ list(APPEND TEHL_SOURCES
   src/scene/contact_case.cpp
   src/scene/contact_scene.cpp
   src/scene/contact_csv.cpp
+  src/scene/path_point_case.cpp
   src/scene/gear_case.cpp
   src/scene/dynamic_load.cpp
   src/scene/mesh_cycle_output.cpp

@@ -49,40 +49,6 @@ std::string SceneName(int id) {
   return buf;
 }
 
-// A TOML string literal's text, or "" when `literal` is not a plain string literal.
-std::string Unquote(const std::string& literal) {
-  if (literal.size() < 2 || literal.front() != '"' || literal.back() != '"') return "";
-  std::string s;
-  for (size_t i = 1; i + 1 < literal.size(); ++i) {
-    if (literal[i] == '\\' && i + 2 < literal.size()) ++i;
-    s += literal[i];
-  }
-  return s;
-}
-
-// Paths in a case are relative to the case file; the scene lives elsewhere, so the scene
-// gets them resolved (relative to the base case) as absolute paths.
-void AddPathOverrides(const Document& base, const std::string& base_path,
-                      std::vector<CaseOverride>* o) {
-  auto current = [&](const std::string& key, const std::string& section, const std::string& k) {
-    for (const auto& x : *o)
-      if (x.key == key) return Unquote(x.literal);
-    return base.String(section, k);
-  };
-  const std::string lub = current("lubricant.name", "lubricant", "name");
-  const std::string resolved = internal::ResolveLubricantPath(lub, base_path);
-  if (!resolved.empty())
-    o->push_back({"lubricant.name", internal::FormatValue(
-                                        internal::Value(fs::absolute(resolved).string()))});
-  for (const char* s : {"surfaces.surface1", "surfaces.surface2"}) {
-    const std::string file = current(std::string(s) + ".profile_file", s, "profile_file");
-    if (file.empty() || fs::path(file).is_absolute()) continue;
-    const fs::path abs = fs::absolute(fs::path(base_path).parent_path() / file).lexically_normal();
-    o->push_back({std::string(s) + ".profile_file", internal::FormatValue(internal::Value(
-                                                         abs.string()))});
-  }
-}
-
 // Checks a scene's case text with the readers of `tehl run` (schema, cross-key rules, gear
 // geometry, film inputs); returns their problems.
 // A scene file that cannot be written (a full disk) is that, not problems of the case.

@@ -291,5 +291,65 @@ TEST(CommandLineErrors, ANewtonToleranceBelowRoundingIsRefused) {
   EXPECT_NE(r.err.find("1e-14"), std::string::npos) << r.err;
 }
 
+// `tehl run --at`: a point that is not on the path is bad input naming the option and what
+// is allowed; --at has no checkpoint to resume; a [contact] case has no path.
+TEST(CommandLineErrors, APointOffThePathIsBadInput) {
+  const std::string dir = testing::UniqueTempPath("at_bad");
+  fs::create_directories(dir);
+  const std::string gear = dir + "/pair.toml";
+  std::ofstream(gear) << GearCase("pinion_speed_rpm = 1000.0");
+  for (const char* at : {"F", "3", "25mm"}) {
+    const testing::RunResult r =
+        testing::RunTehl("run -q '" + gear + "' -o '" + dir + "' --at " + at);
+    ASSERT_TRUE(r.exited);
+    EXPECT_EQ(r.exit_code, 2) << at << ": " << r.err;
+    EXPECT_NE(r.err.find("--at"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("allowed: "), std::string::npos) << r.err;
+  }
+  testing::RunResult r = testing::RunTehl("run -q '" + gear + "' --at C --resume");
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  r = testing::RunTehl("run -q '" + SourcePath("cases/disc_steady.toml") + "' -o '" + dir +
+                       "' --at C");
+  ASSERT_TRUE(r.exited);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("[gear]"), std::string::npos) << r.err;
+}
+
+// `tehl run --at C` solves the steady film at the pitch point and writes the point's case
+// beside its results; running that case again gives the same film.
+TEST(CommandLineErrors, ThePointsCaseRunsAgainToTheSameFilm) {
+  const std::string dir = testing::UniqueTempPath("at_c");
+  fs::create_directories(dir);
+  const std::string gear = dir + "/pair.toml";
+  std::ofstream(gear) << GearCase("pinion_speed_rpm = 1000.0", "[numerics]\ngrid_points = 129\n");
+  const testing::RunResult r = testing::RunTehl("run -q '" + gear + "' -o '" + dir + "' --at C");
+  ASSERT_TRUE(r.exited);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("steady film at C"), std::string::npos) << r.out;
+  const std::string written = dir + "/pair_at_C.toml";
+  ASSERT_TRUE(fs::exists(written)) << r.out;
+  ASSERT_TRUE(fs::exists(dir + "/pair_at_C_steps.csv")) << r.out;
+  const std::string first = testing::ReadAll(dir + "/pair_at_C_steps.csv");
+  const testing::RunResult again = testing::RunTehl("run -q '" + written + "'");
+  ASSERT_TRUE(again.exited);
+  ASSERT_EQ(again.exit_code, 0) << again.out << again.err;
+  // The same numbers but the wall time.
+  auto body = [](const std::string& csv) {
+    std::vector<std::vector<std::string>> rows;
+    std::istringstream in(csv);
+    for (std::string line; std::getline(in, line);) {
+      rows.emplace_back();
+      std::istringstream cells(line);
+      for (std::string c; std::getline(cells, c, ',');) rows.back().push_back(c);
+    }
+    const auto col = std::find(rows[0].begin(), rows[0].end(), "wall_time_s") - rows[0].begin();
+    for (auto& row : rows)
+      if (col < static_cast<long>(row.size())) row.erase(row.begin() + col);
+    return rows;
+  };
+  EXPECT_EQ(body(testing::ReadAll(dir + "/pair_at_C_steps.csv")), body(first));
+}
+
 }  // namespace
 }  // namespace tehl
