@@ -14,7 +14,8 @@ P is "study" unless --prefix is given. Parameters that take one value in every s
 study only overrides, e.g. the grid) and zip parameters that repeat an earlier one scene by
 scene get no summary figure. --table prints the index as a Markdown table (varied values,
 summaries in um, GPa, K) instead of drawing.
-Quantities a result does not hold (T_max, mu of an isothermal run) are left out.
+Quantities a result does not hold (T_max, mu of an isothermal run) are left out; in a study
+that mixes isothermal and thermal scenes the isothermal ones get no temperature point.
 Exit codes: 0 done, 2 the file is missing or not a study index.
 """
 import argparse
@@ -34,6 +35,10 @@ PATH_QUANTITIES = [("h_min", "h_min [um]", 1e6), ("h_c", "h_c [um]", 1e6),
 SUMMARY = [("h_min_min", "min h_min [um]", 1e6), ("h_c_pitch", "h_c at C [um]", 1e6),
            ("p_max_max", "max p_max [GPa]", 1e-9), ("T_max_max", "max T_max [K]", 1.0),
            ("mu_mean", "mean mu [-]", 1.0), ("T_surface_max", "max surface T [K]", 1.0)]
+
+# Summaries that are 0 where a scene's result has none (the temperatures of an isothermal
+# scene, docs/studies.md): drawn without a point there, not at 0 K.
+NO_VALUE_AT_ZERO = ("T_max_max", "T_surface_max")
 
 
 def fail(message):
@@ -229,6 +234,8 @@ def main():
                                  sharex=True, squeeze=False)
         for ax, (k, ylabel, scale) in zip(axes[:, 0], quantities):
             y = f["summary"][k][:] * scale
+            if k in NO_VALUE_AT_ZERO:  # an isothermal scene has no temperature: no point
+                y = np.where(y > 0, y, np.nan)
             for name, rows in groups.items():
                 rows = sorted(rows, key=lambda r: x[r])
                 ax.plot(x[rows], y[rows], "o-", lw=1.2, label=name or None)

@@ -237,11 +237,12 @@ std::vector<PairLoadPoint> TrackedPairLoad(const DynamicResponse& r, double b, i
     p.s_m = s;
     double phase = s - std::floor(s / pb) * pb;
     if (left && phase < 1e-9 * pb && s > 0) phase = pb;
-    if (!mesh.relief().Active()) {
+    if (!mesh.gapped()) {
       p.share = mesh.ShareAt(s, left);
       p.static_n_per_m = r.static_force_n * p.share / b;
       p.dynamic_n_per_m = r.ForceAt(phase, left) * p.share / b;
-    } else {  // the shares follow the approach: static at F_static, dynamic at x(t)
+    } else {  // relief or corner contact: the shares follow the approach, static at
+              // F_static, dynamic at x(t) (as DynamicLoad::LoadFactorAt)
       p.share = mesh.ShareAt(s, left, mesh.StaticApproachAt(s, left, r.static_force_n));
       const DynamicSample d = r.SampleAt(phase, left);
       p.static_n_per_m = r.static_force_n * p.share / b;

@@ -95,12 +95,15 @@ struct DynamicResponse {
 DynamicResponse SolvePeriodicResponse(TorsionalModel& model, const DynamicResponseOptions& o);
 
 // Tracked pair along the path of contact: the dynamic load per unit face width at s,
-// w_dyn(s) = F(phi(s)) share(s) / b, phi(s) = s mod p_b, share by the pair stiffness split.
+// w_dyn(s) = F(phi(s)) share(s, x(phi)) / b, phi(s) = s mod p_b. The share is the pair's part
+// of the mesh force by the stiffness split; with tip relief or corner contact it depends on
+// the approach x (a relieved flank clears, a corner beyond A or E closes): at the static
+// approach of F_s for the static load, at the dynamic x(phi) for the dynamic one.
 struct PairLoadPoint {
   double s_m = 0;              // from A [m]
-  double share = 0;            // stiffness share of the tracked pair [-]
+  double share = 0;            // static share of the tracked pair [-]
   double static_n_per_m = 0;   // F_s share / b [N/m]
-  double dynamic_n_per_m = 0;  // F(phi) share / b [N/m]
+  double dynamic_n_per_m = 0;  // F(phi) share(x(phi)) / b [N/m]
 };
 // `points` >= 2 samples from A to E, the switch points B and D on both sides.
 std::vector<PairLoadPoint> TrackedPairLoad(const DynamicResponse& r,
