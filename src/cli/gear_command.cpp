@@ -76,7 +76,10 @@ void Geometry(std::ostream& o, const internal::GearCase& c) {
     Row(o, "base radius r_b, coast [mm]", mm(g1.coast.base_radius_m), mm(g2.coast.base_radius_m));
   Row(o, "tip radius r_a [mm]", mm(g1.tip_radius_m), mm(g2.tip_radius_m));
   Row(o, "root radius r_f [mm]", mm(g1.root_radius_m), mm(g2.root_radius_m));
-  Row(o, "form radius r_F [mm]", mm(g1.drive.form_radius_m), mm(g2.drive.form_radius_m));
+  Row(o, asym ? "form radius r_F, drive [mm]" : "form radius r_F [mm]", mm(g1.drive.form_radius_m),
+      mm(g2.drive.form_radius_m));
+  if (asym)
+    Row(o, "form radius r_F, coast [mm]", mm(g1.coast.form_radius_m), mm(g2.coast.form_radius_m));
   Row(o, "pitch thickness s [mm]", mm(g1.reference_thickness_m), mm(g2.reference_thickness_m));
   Row(o, "top land s_a [mm]", mm(g1.tip_thickness_m), mm(g2.tip_thickness_m));
   Row(o, "pointed-tip radius [mm]", g1.internal ? "-" : mm(g1.pointed_tip_radius_m),

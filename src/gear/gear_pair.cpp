@@ -8,6 +8,7 @@
 #include "tehl/error.hpp"
 #include "tehl/gear/contact_ratio.hpp"
 #include "tehl/gear/involute.hpp"
+#include "tehl/gear/undercut.hpp"
 
 namespace tehl {
 namespace {
@@ -16,11 +17,12 @@ constexpr double kHalfPi = 0.5 * kPi;
 
 void RequireValidSpec(const GearPairSpec& s) {
   ProblemList problems;
-  auto rule = [&](bool ok, const std::string& key, double value, const std::string& what) {
+  auto rule = [&](bool ok, const std::string& key, double value, const std::string& what,
+                  const std::string& allowed = "") {
     if (ok) return;
     std::ostringstream v;
     v << value;
-    problems.Add({"", 0, key, v.str(), what, ""});
+    problems.Add({"", 0, key, v.str(), what, allowed});
   };
   rule(s.pinion.teeth >= 3, "gear.pinion.teeth", s.pinion.teeth, "must be >= 3");
   rule(s.wheel.teeth >= 3, "gear.wheel.teeth", s.wheel.teeth, "must be >= 3");
@@ -42,7 +44,10 @@ void RequireValidSpec(const GearPairSpec& s) {
   rule(s.center_distance_m >= 0, "gear.center_distance_m", s.center_distance_m,
        "must be > 0 [m], or absent");
   rule(!s.internal || s.wheel.teeth > s.pinion.teeth, "gear.wheel.teeth", s.wheel.teeth,
-       "an internal wheel (ring) needs more teeth than the pinion");
+       "an internal wheel (ring) needs more teeth than the pinion",
+       "more than the pinion's " + std::to_string(s.pinion.teeth) +
+           " teeth (10 or more beyond it: "
+           "docs/gear.md section 3)");
   problems.ThrowIfAny();
 }
 
@@ -101,9 +106,22 @@ FlankGeometry MakeFlank(
   const double h0 = s.dedendum_coefficient - s.root_fillet_coefficient * (1.0 - std::sin(alpha_n));
   f.min_shift_no_undercut = h0 - z * sin_t * sin_t / (2.0 * std::cos(beta));
   f.undercut = x < f.min_shift_no_undercut;
-  // Form circle from the same rack.
+  // Form circle from the same rack: where its straight flank ends, or on an undercut flank
+  // where the rack's tip stops cutting the involute (undercut.hpp).
   const double q = pitch_radius * sin_t - (h0 - x) * s.module_m / sin_t;
-  f.form_radius_m = q > 0 ? std::hypot(f.base_radius_m, q) : f.base_radius_m;
+  if (q > 0) {
+    f.form_radius_m = std::hypot(f.base_radius_m, q);
+  } else {
+    RackCut rack;
+    rack.pitch_radius_m = pitch_radius;
+    rack.pressure_angle_rad = f.pressure_angle_rad;
+    rack.normal_pressure_angle_rad = alpha_n;
+    rack.module_m = s.module_m;
+    rack.profile_shift = x;
+    rack.dedendum_coefficient = s.dedendum_coefficient;
+    rack.root_fillet_coefficient = s.root_fillet_coefficient;
+    f.form_radius_m = std::hypot(f.base_radius_m, UndercutRollLength(rack));
+  }
   return f;
 }
 

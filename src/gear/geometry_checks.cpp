@@ -41,9 +41,12 @@ class Checker {
   explicit Checker(const GearPair& pair) : pair_(pair), s_(pair.spec()) {}
 
   std::vector<GeometryProblem> Run() {
-    CenterDistance();
+    const bool meshes = CenterDistance();
     BasicRack();
     for (int i = 0; i < 2; ++i) Member(i);
+    // Below the base radii's sum (difference) there is no line of action: what follows would
+    // be computed from an impossible geometry.
+    if (!meshes) return std::move(out_);
     for (Flank f : {Flank::kDrive, Flank::kCoast}) {
       if (f == Flank::kCoast && Symmetric()) break;
       Interference(f);
@@ -67,6 +70,24 @@ class Checker {
     const GearMemberSpec& m = i == 0 ? s_.pinion : s_.wheel;
     return m.tip_radius_m > 0 ? "tip_radius_m" : "profile_shift";
   }
+  // Where a flank's involute begins, for messages.
+  static std::string FormCircle(const FlankGeometry& fl, double r_form) {
+    return fl.undercut ? "the end of its undercut r_F = " + Mm(r_form) +
+                             " (the generating rack's tip has cut the involute away below it)"
+                       : "its involute form circle r_F = " + Mm(r_form) + " (in the root fillet)";
+  }
+  std::string Who(int i) const { return i == 0 ? "pinion" : s_.internal ? "ring" : "wheel"; }
+  // What gear i's tip radius must be, said with the key the problem names: a shift moves the
+  // tip with it (r_a = r + (h_aP + x) m_n outwards, a ring's inner tip too: a positive ring
+  // shift shortens its teeth).
+  std::string TipTo(int i, bool at_least, double limit_m) const {
+    std::string t =
+        "a " + Who(i) + " tip radius " + (at_least ? "of at least " : "of at most ") + Mm(limit_m);
+    if (TipKey(i) == "profile_shift")
+      t += std::string(" (tip_radius_m, or a ") + (at_least ? "larger " : "smaller ") + Who(i) +
+           " profile_shift)";
+    return t;
+  }
 
   void Error(std::string section, std::string key, std::string rule, std::string allowed) {
     out_.push_back(
@@ -76,7 +97,8 @@ class Checker {
     out_.push_back({std::move(section), std::move(key), std::move(rule), std::move(allowed), true});
   }
 
-  void CenterDistance() {
+  // False when the involutes cannot mesh at all.
+  bool CenterDistance() {
     const double a = pair_.center_distance_m();
     const double a_free = pair_.zero_backlash_center_distance_m();
     for (Flank f : {Flank::kDrive, Flank::kCoast}) {
@@ -88,7 +110,7 @@ class Checker {
                   " of the base radii" + FlankLabel(f) + ": the involutes cannot mesh",
               "center_distance_m >= " + Num(a_free, 6) +
                   " (the zero-backlash distance of the given shifts)");
-        return;
+        return false;
       }
     }
     const double tolerance = 1e-4 * s_.module_m;
@@ -97,9 +119,15 @@ class Checker {
             "the teeth overlap at a = " + Mm(a) + ": backlash " + Num(pair_.backlash_m() * 1e6, 2) +
                 " um with profile shifts x1 = " + Num(s_.pinion.profile_shift) +
                 ", x2 = " + Num(s_.wheel.profile_shift),
-            "center_distance_m >= " + Num(a_free, 6) +
-                " [m] (zero backlash), or smaller profile shifts");
+            // A ring's backlash e_w2 - s_w1 grows as the pinion moves toward its centre,
+            // and a positive ring shift widens the ring's spaces.
+            s_.internal ? "center_distance_m <= " + Num(a_free, 6) +
+                              " [m] (zero backlash), a smaller pinion profile_shift or a "
+                              "larger ring profile_shift"
+                        : "center_distance_m >= " + Num(a_free, 6) +
+                              " [m] (zero backlash), or smaller profile shifts");
     }
+    return true;
   }
 
   void BasicRack() {
@@ -143,7 +171,9 @@ class Checker {
                                  " < x_min = " + Num(fl.min_shift_no_undercut) +
                                  " for z = " + std::to_string(g.teeth);
         if (s_.allow_undercut) {
-          Warning(sec, "profile_shift", rule + " (accepted: allow_undercut = true)",
+          Warning(sec, "profile_shift",
+                  rule + " (accepted: allow_undercut = true; its involute begins at r_F = " +
+                      Mm(fl.form_radius_m) + ", where the rack's tip stops cutting it)",
                   "profile_shift >= " + Num(fl.min_shift_no_undercut));
         } else {
           Error(sec, "profile_shift", rule,
@@ -188,14 +218,12 @@ class Checker {
                 " beyond the tangent point T1 of the pinion's base circle",
             // The limit circle through T1: sqrt(r_b2^2 + T1T2^2) (seed 000 eq. 2.17); a ring's
             // tip (its inner circle) must lie outside it, an external wheel's inside.
-            (s_.internal ? "a ring tip radius of at least " : "a wheel tip radius at most ") +
-                Mm(std::hypot(l.wheel_base_radius_m, l.tangent_length_m)) +
-                (s_.internal ? " (a positive ring profile_shift)"
-                             : ", a positive pinion profile_shift, or more pinion teeth"));
+            TipTo(1, s_.internal, std::hypot(l.wheel_base_radius_m, l.tangent_length_m)) +
+                (s_.internal ? "" : ", a positive pinion profile_shift, or more pinion teeth"));
     } else {
       const double r_sap = std::hypot(l.pinion_base_radius_m, l.a_m);
       const double r_form = p.flank(f).form_radius_m;
-      if (!p.flank(f).undercut && r_sap < r_form - 1e-9) {
+      if (r_sap < r_form - 1e-9) {
         // The wheel tip circle that crosses the line of action at the pinion's form circle,
         // at the roll length rho_F = sqrt(r_F^2 - r_b1^2) from T1: A = T1T2 - sqrt(r_a2^2 -
         // r_b2^2) for an external wheel, sqrt(r_a2^2 - r_b2^2) - T1T2 for a ring. A ring's tip
@@ -206,11 +234,9 @@ class Checker {
             std::hypot(l.wheel_base_radius_m, s_.internal ? l.tangent_length_m + roll_form
                                                           : l.tangent_length_m - roll_form);
         Error("gear.wheel", TipKey(1),
-              "involute interference" + FlankLabel(f) +
-                  ": the wheel tip meets the pinion at r = " + Mm(r_sap) +
-                  ", below its involute form circle r_F = " + Mm(r_form) + " (in the root fillet)",
-              (s_.internal ? "a ring tip radius of at least " : "a wheel tip radius at most ") +
-                  Mm(limit) + " or a larger pinion profile_shift");
+              "involute interference" + FlankLabel(f) + ": the wheel tip meets the pinion at r = " +
+                  Mm(r_sap) + ", below " + FormCircle(p.flank(f), r_form),
+              TipTo(1, s_.internal, limit) + ", or a larger pinion profile_shift");
       }
     }
     if (s_.internal) return;  // the pinion tip meets the ring beyond T2 on the far side
@@ -220,24 +246,22 @@ class Checker {
       Error("gear.pinion", TipKey(0),
             "involute interference" + FlankLabel(f) + ": the pinion tip reaches " + Mm(-roll2) +
                 " beyond the tangent point T2 of the wheel's base circle",
-            "a pinion tip radius at most " +
-                Mm(std::hypot(l.pinion_base_radius_m, l.tangent_length_m)) +
+            TipTo(0, false, std::hypot(l.pinion_base_radius_m, l.tangent_length_m)) +
                 ", a positive wheel profile_shift, or more wheel teeth");
     } else {
       const double r_sap = std::hypot(l.wheel_base_radius_m, roll2);
       const double r_form = w.flank(f).form_radius_m;
-      if (!w.flank(f).undercut && r_sap < r_form - 1e-9) {
+      if (r_sap < r_form - 1e-9) {
         Error("gear.pinion", TipKey(0),
-              "involute interference" + FlankLabel(f) +
-                  ": the pinion tip meets the wheel at r = " + Mm(r_sap) +
-                  ", below its involute form circle r_F = " + Mm(r_form) + " (in the root fillet)",
-              "a pinion tip radius at most " +
-                  Mm(std::hypot(
-                      l.pinion_base_radius_m,
-                      l.tangent_length_m -
-                          std::sqrt(std::max(0.0, r_form * r_form - l.wheel_base_radius_m *
-                                                                        l.wheel_base_radius_m)))) +
-                  " or a larger wheel profile_shift");
+              "involute interference" + FlankLabel(f) + ": the pinion tip meets the wheel at r = " +
+                  Mm(r_sap) + ", below " + FormCircle(w.flank(f), r_form),
+              TipTo(0, false,
+                    std::hypot(l.pinion_base_radius_m,
+                               l.tangent_length_m -
+                                   std::sqrt(std::max(
+                                       0.0, r_form * r_form -
+                                                l.wheel_base_radius_m * l.wheel_base_radius_m)))) +
+                  ", or a larger wheel profile_shift");
       }
     }
   }
@@ -262,13 +286,17 @@ class Checker {
   void Clearances() {
     for (int i = 0; i < 2; ++i) {
       const double c = i == 0 ? pair_.pinion_tip_clearance_m() : pair_.wheel_tip_clearance_m();
-      if (c < 0) {
+      // Round-off of a tip that just touches the root circle is no overlap.
+      if (c < -1e-9 * s_.module_m) {
+        // A ring's tip is its inner circle: its teeth shorten as it grows; the pinion moves
+        // away from both of a ring's circles as the centre distance shrinks.
+        const double tip = Gear(i).tip_radius_m;
+        const bool ring = i == 1 && s_.internal;
         Error(Section(i), TipKey(i),
-              std::string("the ") + Name(i) + " tip reaches " + Mm(-c) + " into the " +
-                  Name(1 - i) + "'s root circle",
-              "a tip radius smaller by at least " + Mm(-c) +
-                  " (tip shortening), or a larger "
-                  "center_distance_m");
+              "the " + Who(i) + " tip reaches " + Mm(-c) + " into the " + Who(1 - i) +
+                  "'s root circle",
+              TipTo(i, ring, ring ? tip - c : tip + c) + " (tip shortening), or a " +
+                  (s_.internal ? "smaller" : "larger") + " center_distance_m");
       } else if (c < kMinTipClearance * s_.module_m) {
         // Profile-shifted pairs at a centre distance below a0 + (x1 + x2) m_n keep the tips of
         // r + m (h_aP + x) unless shortened: the clearance shrinks (tip radii as given or
@@ -300,29 +328,39 @@ class Checker {
           eps > 0 ? "transverse contact ratio" + FlankLabel(f) + " eps_alpha = " + Num(eps)
                   : "the tip circles" + FlankLabel(f) +
                         " do not overlap on the line of action (no contact): eps_alpha";
-      std::string raise =
-          "eps_alpha >= 1.2 (seed 003 section 4.1): more teeth, larger tip radii "
-          "(addendum_coefficient) or a smaller pressure angle";
+      const bool tips_given = s_.pinion.tip_radius_m > 0 || s_.wheel.tip_radius_m > 0;
+      const std::string longer =
+          tips_given ? std::string(s_.internal ? "a larger pinion and a smaller ring tip_radius_m"
+                                               : "larger tip radii (tip_radius_m)")
+                     : "longer addenda (addendum_coefficient)";
+      std::string raise = "eps_alpha >= 1.2 (seed 003 section 4.1): more teeth, " + longer +
+                          " or a smaller pressure angle";
       if (opened)
         raise = "eps_alpha >= 1.2 (seed 003 section 4.1): center_distance_m nearer " +
                 Num(pair_.zero_backlash_center_distance_m(), 6) +
-                " [m] (zero backlash), more teeth or larger tip radii";
-      // The key a user changed from the standard: an opened centre distance, a short
-      // addendum, else the pressure angle.
-      const std::string key = !r.continuous && opened                 ? "center_distance_m"
-                              : s_.addendum_coefficient < 1.0 - 1e-12 ? "addendum_coefficient"
-                                                                      : angle_key;
+                " [m] (zero backlash), more teeth or " + longer;
+      // The key a user changed from the standard: an opened centre distance, a tip radius
+      // given, a short addendum, else the pressure angle.
+      std::string section = "gear";
+      std::string key = !r.continuous && opened                 ? "center_distance_m"
+                        : s_.addendum_coefficient < 1.0 - 1e-12 ? "addendum_coefficient"
+                                                                : angle_key;
+      if (!(!r.continuous && opened) && tips_given) {
+        section = s_.pinion.tip_radius_m > 0 ? "gear.pinion" : "gear.wheel";
+        key = "tip_radius_m";
+      }
       if (!r.continuous) {
         if (f == Flank::kDrive)
-          Error("gear", key, what + " < 1: the mesh is not continuous",
+          Error(section, key, what + " < 1: the mesh is not continuous",
                 "eps_alpha >= 1, 1.2 or more recommended (seed 003 section 4.1): " +
                     raise.substr(raise.find(": ") + 2));
         else
-          Warning("gear", key, what + " < 1: the coast flank cannot carry a reversed drive", raise);
+          Warning(section, key, what + " < 1: the coast flank cannot carry a reversed drive",
+                  raise);
       } else if (r.below_minimum) {
-        Warning("gear", key, what + " < 1.2, the usual industrial minimum", raise);
+        Warning(section, key, what + " < 1.2, the usual industrial minimum", raise);
       } else if (r.near_integer) {
-        Warning("gear", key, what + " is close to an integer: mesh impacts synchronise",
+        Warning(section, key, what + " is close to an integer: mesh impacts synchronise",
                 "a contact ratio away from integers (seed 003 section 4.1)");
       }
     }

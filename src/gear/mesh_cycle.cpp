@@ -22,7 +22,8 @@ std::vector<MeshCycleRow> MeshCycle(const PathOfContact& path,
   for (const auto& m : options.Validate()) problems.Add({"", 0, "mesh_cycle", "", m, ""});
   const bool by_stiffness = options.load_sharing != LoadSharing::kLinear;
   if (by_stiffness && !stiffness)
-    problems.Add({"", 0, "gear.load_sharing", "\"" + ToString(options.load_sharing) + "\"",
+    problems.Add({"", 0, "gear.load_sharing",
+                  std::string(1, '"').append(ToString(options.load_sharing)).append(1, '"'),
                   "stiffness load sharing needs a mesh stiffness model", "\"linear\""});
   if (options.relief.Active() && !by_stiffness)
     problems.Add({"", 0, "gear.load_sharing", ToString(options.load_sharing),

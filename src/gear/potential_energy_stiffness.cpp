@@ -28,7 +28,8 @@ std::vector<InputProblem> PotentialEnergyStiffness::Validate(const ToothBlank& b
   if (b.internal) {
     out.push_back(MethodRangeProblem("\"potential_energy\"",
                                      who + "ring gears are not modelled (external teeth only)",
-                                     "an external pair"));
+                                     "an external pair, or [gear] mesh_stiffness = \"iso\" (ISO "
+                                     "6336-1 method B, which covers internal pairs)"));
   }
   if (!out.empty()) return out;
   const internal::StiffnessToothGeometry g(b);

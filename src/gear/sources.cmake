@@ -9,6 +9,7 @@ list(APPEND TEHL_SOURCES
   src/gear/mesh_stiffness.cpp
   src/gear/involute.cpp
   src/gear/contact_ratio.cpp
+  src/gear/undercut.cpp
   src/gear/gear_pair.cpp
   src/gear/geometry_checks.cpp
   src/gear/path_of_contact.cpp

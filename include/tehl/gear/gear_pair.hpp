@@ -67,9 +67,10 @@ struct FlankGeometry {
   double base_pitch_m = 0;               // p_b = 2 pi r_b / z [m]
   // Lowest point of the generated involute: where the straight flank of the rack ends,
   // r_F^2 = r_b^2 + (r sin(alpha_t) - h_F m_n / sin(alpha_t))^2 with
-  // h_F = h_fP - rho_fP (1 - sin(alpha_n)) - x (ISO 21771 d_Ff); r_b when that term is
-  // negative (the rack cuts below the base circle); the root radius for a ring (shaper-cut,
-  // not modelled). [m]
+  // h_F = h_fP - rho_fP (1 - sin(alpha_n)) - x (ISO 21771 d_Ff); when that term is negative
+  // (an undercut flank) where the rack's rounded tip stops cutting the involute away,
+  // sqrt(r_b^2 + s_u^2) (undercut.hpp); the root radius for a ring (shaper-cut, not
+  // modelled). [m]
   double form_radius_m = 0;
   // Smallest shift without undercut, x_min = h_F0 - z sin^2(alpha_t) / (2 cos(beta)), h_F0 =
   // h_fP - rho_fP (1 - sin alpha_n) where the rack's straight flank ends. For the ISO 53 rack

@@ -243,6 +243,28 @@ TEST_F(GearCommand, AsymmetricReportGivesTheUndercutLimitOfEachFlank) {
   EXPECT_EQ(r.out.substr(c, 60).find(coast) != std::string::npos, true) << coast << r.out;
 }
 
+// And one form circle per flank, where the rack's straight flank of that side ends:
+// r_F^2 = r_b^2 + (r sin(alpha) - h_F0 m / sin(alpha))^2 (x = 0; ISO 21771), for the pinion
+// (r = 35 mm, m = 2 mm): 32.8033 mm on the 35 deg drive flank, 33.3038 mm on the 20 deg coast
+// flank (hand calculation).
+TEST_F(GearCommand, AsymmetricReportGivesTheFormCircleOfEachFlank) {
+  const Result r = Tehl("gear cases/asymmetric_35_20.toml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto form = [](double deg) {
+    const double a = deg * M_PI / 180, h = 1.25 - 0.15 * (1 - std::sin(a));
+    const double q = 35 * std::sin(a) - h * 2 / std::sin(a);
+    return std::hypot(35 * std::cos(a), q);
+  };
+  for (const auto& [flank, deg] :
+       {std::pair<const char*, double>{"drive", 35.0}, {"coast", 20.0}}) {
+    char want[32];
+    std::snprintf(want, sizeof want, "%.4f", form(deg));
+    const size_t at = r.out.find(std::string("form radius r_F, ") + flank);
+    ASSERT_NE(at, std::string::npos) << r.out;
+    EXPECT_NE(r.out.substr(at, 60).find(want), std::string::npos) << want << "\n" << r.out;
+  }
+}
+
 TEST_F(GearCommand, EveryCaseOfTheRepositoryIsValid) {
   const Result r = Tehl(
       "case --check cases/seed004_sae40.toml cases/seed004_sae90.toml "
@@ -299,7 +321,7 @@ TEST_F(GearCommand, InterferenceAndLowContactRatioExitTwo) {
       Tehl("gear " +
            Case("eps.toml", "", "tip_radius_m = 0.0355\n", "tip_radius_m = 0.1055\n").string());
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("gear.pressure_angle_deg"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("gear.pinion.tip_radius_m"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("< 1: the mesh is not continuous"), std::string::npos) << r.err;
   // The hard limit is 1, with 1.2 the recommended minimum (seed 003 section 4.1).
   EXPECT_NE(r.err.find("allowed: eps_alpha >= 1, 1.2 or more recommended"), std::string::npos)

@@ -148,7 +148,7 @@ TEST(CheckGeometry, FilletInterferenceOfAnExternalPairNamesTheLargestTipRadius) 
   const GeometryProblem* p = f.Error("gear.pinion.tip_radius_m", "form circle");
   ASSERT_TRUE(p) << f.All();
   EXPECT_TRUE(Mentions(p, "r_F = 103.1465 mm")) << p->ToString();
-  EXPECT_TRUE(Mentions(p, "a pinion tip radius at most 37.4057 mm")) << p->ToString();
+  EXPECT_TRUE(Mentions(p, "a pinion tip radius of at most 37.4057 mm")) << p->ToString();
   s.pinion.tip_radius_m = 37.41e-3;
   EXPECT_TRUE(Check(s).Error("gear.pinion.tip_radius_m", "form circle")) << Check(s).All();
   s.pinion.tip_radius_m = 37.40e-3;
@@ -172,13 +172,23 @@ TEST(CheckGeometry, ContactRatioBelowOneIsAnErrorBelow1Point2AWarning) {
   s.wheel.tip_radius_m = 0.1055;
   const Found f = Check(s);
   ASSERT_LT(GearPair(s).line(Flank::kDrive).contact_ratio, 1.0);
-  EXPECT_TRUE(Mentions(f.Error("gear.pressure_angle_deg"), "not continuous")) << f.All();
+  // The tips are given: the problem names the key that was changed from the standard
+  // (docs/gear.md section 3), and what to do with it.
+  EXPECT_TRUE(Mentions(f.Error("gear.pinion.tip_radius_m"), "not continuous")) << f.All();
+  EXPECT_TRUE(Mentions(f.Error("gear.pinion.tip_radius_m"), "larger tip radii (tip_radius_m)"))
+      << f.All();
   s.pinion.tip_radius_m = 0.0362;
   s.wheel.tip_radius_m = 0.1062;
   const double eps = GearPair(s).line(Flank::kDrive).contact_ratio;
   ASSERT_GT(eps, 1.0);
   ASSERT_LT(eps, 1.2);
-  EXPECT_TRUE(Mentions(Check(s).Warning("gear.pressure_angle_deg"), "< 1.2"));
+  EXPECT_TRUE(Mentions(Check(s).Warning("gear.pinion.tip_radius_m"), "< 1.2"));
+  // Standard tips cut short by the addendum: that key is named, with its fix.
+  GearPairSpec standard = Seed004Spec();
+  standard.addendum_coefficient = 0.5;
+  ASSERT_LT(GearPair(standard).line(Flank::kDrive).contact_ratio, 1.0);
+  EXPECT_TRUE(Mentions(Check(standard).Error("gear.addendum_coefficient"), "longer addenda"))
+      << Check(standard).All();
 }
 
 TEST(CheckGeometry, RackTipRadiusMustFitAnAsymmetricRack) {
@@ -214,6 +224,59 @@ TEST(RequireValidGeometry, ThrowsEveryErrorAndReturnsWarnings) {
   }
   s.allow_undercut = true;
   EXPECT_EQ(RequireValidGeometry(GearPair(s)).size(), 2u);
+}
+
+// A ring's geometry runs the other way: its backlash e_w2 - s_w1 grows as the pinion moves
+// toward its centre, its tip is its inner circle, and the pinion leaves both of its circles as
+// the centre distance shrinks. The fixes the messages offer must say so. Internal pair of
+// reference_pairs.hpp: 20/60, m = 3 mm, a = 60 mm, ring root r_f2 = 90 + 1.25 * 3 = 93.75 mm,
+// pinion root r_f1 = 30 - 3.75 = 26.25 mm (hand calculation).
+TEST(CheckGeometry, AnInternalPairsFixesPointTheRingsWay) {
+  GearPairSpec s = testing::InternalSpec();
+  const double a_free = GearPair(s).zero_backlash_center_distance_m();
+  s.center_distance_m = a_free + 50e-6;
+  ASSERT_LT(GearPair(s).backlash_m(), 0.0);  // a ring overlaps when the pinion moves out
+  EXPECT_TRUE(Mentions(Check(s).Error("gear.center_distance_m", "overlap"),
+                       "center_distance_m <= 0.060000"))
+      << Check(s).All();
+  s.center_distance_m = a_free - 50e-6;
+  EXPECT_GT(GearPair(s).backlash_m(), 0.0);
+  EXPECT_FALSE(Check(s).Error("gear.center_distance_m", "overlap")) << Check(s).All();
+
+  // Pinion tip 34 mm: 0.25 mm beyond the ring's root circle (93.75 - 60 = 33.75 mm).
+  s = testing::InternalSpec();
+  s.pinion.tip_radius_m = 34e-3;
+  const Found pinion = Check(s);
+  const GeometryProblem* p = pinion.Error("gear.pinion.tip_radius_m", "root circle");
+  ASSERT_TRUE(p) << pinion.All();
+  EXPECT_TRUE(Mentions(p, "0.2500 mm into the ring's root circle")) << p->ToString();
+  EXPECT_TRUE(Mentions(p, "a pinion tip radius of at most 33.7500 mm")) << p->ToString();
+  EXPECT_TRUE(Mentions(p, "a smaller center_distance_m")) << p->ToString();
+
+  // Ring tip 86 mm: 0.25 mm into the pinion's root circle (60 + 26.25 = 86.25 mm).
+  s = testing::InternalSpec();
+  s.wheel.tip_radius_m = 86e-3;
+  const Found ring = Check(s);
+  p = ring.Error("gear.wheel.tip_radius_m", "root circle");
+  ASSERT_TRUE(p) << ring.All();
+  EXPECT_TRUE(Mentions(p, "the ring tip reaches 0.2500 mm into the pinion's root circle"))
+      << p->ToString();
+  EXPECT_TRUE(Mentions(p, "a ring tip radius of at least 86.2500 mm")) << p->ToString();
+  EXPECT_TRUE(Mentions(p, "a smaller center_distance_m")) << p->ToString();
+  // Exactly on the root circle: no overlap.
+  s.wheel.tip_radius_m = 86.25e-3;
+  EXPECT_FALSE(Check(s).Error("gear.wheel.tip_radius_m", "root circle")) << Check(s).All();
+}
+
+// Below the base radii's sum there is no line of action: only that is reported, not tips
+// "into the roots" computed from it.
+TEST(CheckGeometry, AnImpossibleCentreDistanceIsReportedAlone) {
+  GearPairSpec s = Seed004Spec();
+  s.center_distance_m = 0.125;
+  const Found f = Check(s);
+  ASSERT_TRUE(f.Error("gear.center_distance_m", "cannot mesh")) << f.All();
+  EXPECT_EQ(f.All().find("root circle"), std::string::npos) << f.All();
+  EXPECT_EQ(f.All().find("interference"), std::string::npos) << f.All();
 }
 
 }  // namespace
