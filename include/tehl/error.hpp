@@ -1,4 +1,4 @@
-// Errors in tehl come in two tiers (STYLE.md section 5):
+// Errors in tehl come in two tiers:
 //  - InputError: a case, lubricant, study or train file (or an Options struct) broke a rule.
 //    Always on. It carries every problem found in one pass, each with file, line, key, the
 //    value received, the rule and what is allowed. The program exits with code 2.

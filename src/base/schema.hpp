@@ -1,7 +1,7 @@
 // Declarative schemas for tehl's TOML input files (case, lubricant, study, train), in the
 // spirit of deal.II's ParameterHandler: only declared keys are accepted, each with a type, a
 // unit, a range and a one-line meaning. Reading a file collects every problem in one pass,
-// each with file:line, key, value, rule and what is allowed (STYLE.md section 5). The same
+// each with file:line, key, value, rule and what is allowed (tehl/error.hpp). The same
 // schema prints the documented defaults (`tehl case --print-default`) and writes the document
 // back as run, defaults filled (HDF5 /case).
 //

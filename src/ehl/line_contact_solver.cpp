@@ -22,6 +22,32 @@ namespace tehl {
 namespace {
 using internal::FluidLaws;
 using internal::TimeDerivative;
+
+// The grid a solver is built on: a default-constructed UniformGrid is empty (the checked
+// constructor and AroundHertz give n >= 5).
+const UniformGrid& UsableGrid(const UniformGrid& grid) {
+  if (grid.size() < 5 || !(grid.dx_m() > 0) || !std::isfinite(grid.dx_m()))
+    throw InputError(InputProblem{"", 0, "grid", std::to_string(grid.size()) + " nodes",
+                                  "a line contact needs a grid of at least 5 nodes (a "
+                                  "default-constructed UniformGrid is empty)",
+                                  "UniformGrid(x_start_m, x_end_m, n) or "
+                                  "UniformGrid::AroundHertz(b, n), n >= 5"});
+  return grid;
+}
+
+// "LineContactSolver::Options::field = value violates allowed" (Options::Validate) as a
+// problem with its key, value and what is allowed.
+InputProblem OptionsProblem(const std::string& message) {
+  const size_t eq = message.find(" = "), violates = message.find(" violates ");
+  if (eq == std::string::npos || violates == std::string::npos || violates < eq)
+    return {"", 0, "LineContactSolver::Options", "", message, ""};
+  return {"",
+          0,
+          message.substr(0, eq),
+          message.substr(eq + 3, violates - eq - 3),
+          "out of range",
+          message.substr(violates + 10)};
+}
 }  // namespace
 
 // ---------------------------------------------------------------------------------------
@@ -33,7 +59,7 @@ LineContactSolver::Impl::Impl(const UniformGrid& grid,
                               std::shared_ptr<const SurfaceShape> s1,
                               std::shared_ptr<const SurfaceShape> s2,
                               const ContactSolids& solids)
-    : grid_(grid),
+    : grid_(UsableGrid(grid)),
       e_prime_(e_prime),
       lub_(lub),
       eff_(eff),
@@ -43,7 +69,7 @@ LineContactSolver::Impl::Impl(const UniformGrid& grid,
       solids_(solids),
       sys_(grid.size(), grid.dx_m(), opt.upwind_order) {
   ProblemList bad;
-  for (const auto& m : opt.Validate()) bad.Add({"", 0, "LineContactSolver::Options", "", m, ""});
+  for (const auto& m : opt.Validate()) bad.Add(OptionsProblem(m));
   if (!(e_prime > 0) || !std::isfinite(e_prime))
     bad.Add({"", 0, "e_prime_pa", internal::FormatReal(e_prime), "must be finite and > 0",
              "E' > 0 [Pa], 2/E' = (1-nu1^2)/E1 + (1-nu2^2)/E2"});

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "tehl/error.hpp"
 #include "tehl/gear/contact_ratio.hpp"
@@ -24,10 +26,32 @@ void RequireValidSpec(const GearPairSpec& s) {
     v << value;
     problems.Add({"", 0, key, v.str(), what, allowed});
   };
+  const auto finite_positive = [](double v) { return v > 0 && std::isfinite(v); };
   rule(s.pinion.teeth >= 3, "gear.pinion.teeth", s.pinion.teeth, "must be >= 3");
   rule(s.wheel.teeth >= 3, "gear.wheel.teeth", s.wheel.teeth, "must be >= 3");
-  rule(s.module_m > 0, "gear.module_m", s.module_m, "must be > 0 [m]");
-  rule(s.face_width_m > 0, "gear.face_width_m", s.face_width_m, "must be > 0 [m]");
+  rule(finite_positive(s.module_m), "gear.module_m", s.module_m, "must be finite and > 0 [m]");
+  rule(finite_positive(s.face_width_m), "gear.face_width_m", s.face_width_m,
+       "must be finite and > 0 [m]");
+  // Each gear: a finite shift, a tip radius given (> 0) or not (0), and a material.
+  for (const auto& [section, m] :
+       {std::pair<std::string, const GearMemberSpec*>{"gear.pinion", &s.pinion},
+        {"gear.wheel", &s.wheel}}) {
+    rule(std::isfinite(m->profile_shift), section + ".profile_shift", m->profile_shift,
+         "must be finite", "a shift coefficient, typically -1.5 .. 1.5");
+    rule(m->tip_radius_m == 0 || finite_positive(m->tip_radius_m), section + ".tip_radius_m",
+         m->tip_radius_m, "must be finite and > 0 [m], or 0 (from module, addendum and shift)");
+    const GearMaterial& mat = m->material;
+    rule(finite_positive(mat.youngs_modulus_pa), section + ".youngs_modulus_pa",
+         mat.youngs_modulus_pa, "must be finite and > 0 [Pa]");
+    rule(mat.poisson_ratio >= 0 && mat.poisson_ratio < 0.5, section + ".poisson_ratio",
+         mat.poisson_ratio, "must be in [0, 0.5)");
+    rule(finite_positive(mat.density_kg_m3), section + ".density_kg_m3", mat.density_kg_m3,
+         "must be finite and > 0 [kg/m^3]");
+    rule(finite_positive(mat.conductivity_w_mk), section + ".conductivity_w_mk",
+         mat.conductivity_w_mk, "must be finite and > 0 [W/(m K)]");
+    rule(finite_positive(mat.heat_capacity_j_kgk), section + ".heat_capacity_j_kgk",
+         mat.heat_capacity_j_kgk, "must be finite and > 0 [J/(kg K)]");
+  }
   rule(s.drive_pressure_angle_rad > 0 && s.drive_pressure_angle_rad < DegToRad(80),
        "gear.pressure_angle_deg", RadToDeg(s.drive_pressure_angle_rad), "must be in (0, 80) [deg]");
   rule(s.coast_pressure_angle_rad > 0 && s.coast_pressure_angle_rad < DegToRad(80),
@@ -35,14 +59,14 @@ void RequireValidSpec(const GearPairSpec& s) {
        "must be in (0, 80) [deg]");
   rule(s.helix_angle_rad >= 0 && s.helix_angle_rad < DegToRad(45), "gear.helix_angle_deg",
        RadToDeg(s.helix_angle_rad), "must be in [0, 45) [deg]");
-  rule(s.addendum_coefficient > 0, "gear.addendum_coefficient", s.addendum_coefficient,
-       "must be > 0");
-  rule(s.dedendum_coefficient > 0, "gear.dedendum_coefficient", s.dedendum_coefficient,
-       "must be > 0");
-  rule(s.root_fillet_coefficient >= 0, "gear.root_fillet_coefficient", s.root_fillet_coefficient,
-       "must be >= 0");
-  rule(s.center_distance_m >= 0, "gear.center_distance_m", s.center_distance_m,
-       "must be > 0 [m], or absent");
+  rule(finite_positive(s.addendum_coefficient), "gear.addendum_coefficient", s.addendum_coefficient,
+       "must be finite and > 0");
+  rule(finite_positive(s.dedendum_coefficient), "gear.dedendum_coefficient", s.dedendum_coefficient,
+       "must be finite and > 0");
+  rule(s.root_fillet_coefficient >= 0 && std::isfinite(s.root_fillet_coefficient),
+       "gear.root_fillet_coefficient", s.root_fillet_coefficient, "must be finite and >= 0");
+  rule(s.center_distance_m == 0 || finite_positive(s.center_distance_m), "gear.center_distance_m",
+       s.center_distance_m, "must be finite and > 0 [m], or absent (0)");
   rule(!s.internal || s.wheel.teeth > s.pinion.teeth, "gear.wheel.teeth", s.wheel.teeth,
        "an internal wheel (ring) needs more teeth than the pinion",
        "more than the pinion's " + std::to_string(s.pinion.teeth) +

@@ -2,15 +2,17 @@
 
 #include <cmath>
 
+#include "base/number_text.hpp"
 #include "tehl/error.hpp"
 
 namespace tehl {
 
 PathOfContact::PathOfContact(const GearPair& pair, double pinion_speed_rad_s, Flank flank)
     : line_(pair.line(flank)), internal_(pair.spec().internal), w1_(pinion_speed_rad_s) {
-  if (!(pinion_speed_rad_s > 0))
+  if (!(pinion_speed_rad_s > 0) || !std::isfinite(pinion_speed_rad_s))
     throw InputError(InputProblem{"", 0, "operating.pinion_speed_rad_s",
-                                  std::to_string(pinion_speed_rad_s), "must be > 0 [rad/s]", ""});
+                                  internal::FormatReal(pinion_speed_rad_s),
+                                  "must be finite and > 0 [rad/s]", "a pinion speed > 0 [rad/s]"});
   w2_ = w1_ / pair.gear_ratio();
 }
 

@@ -237,7 +237,7 @@ TEST(MeshCycleResults, PlotWritesTheThreeFiguresAndRejectsAMissingFile) {
 
 // A cycle that stops at its first step (two Newton iterations allowed: the film at A cannot
 // converge) exits 1, names the failed step, and prints no film "at the pitch point" (it never
-// got there) nor a temperature of the failed step (STYLE.md: never a silent wrong answer).
+// got there) nor a temperature of the failed step: never a silent wrong answer.
 TEST(MeshCycleResults, StoppedCycleReportsNoPitchPointValues) {
   const std::string dir = TempDirFor("stopped");
   fs::create_directories(dir);
@@ -248,7 +248,7 @@ TEST(MeshCycleResults, StoppedCycleReportsNoPitchPointValues) {
                                   "' -q -o '" + dir + "' >'" + out + "' 2>'" + err + "'")
                                      .c_str());
   ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 1);  // not converged (STYLE.md section 5)
+  EXPECT_EQ(WEXITSTATUS(status), 1);  // not converged (tehl/error.hpp)
   const std::string stdout_text = ReadText(out), stderr_text = ReadText(err);
   EXPECT_NE(stdout_text.find("the cycle stopped before the pitch point"), std::string::npos)
       << stdout_text;

@@ -117,7 +117,7 @@ TEST(Sweep, SceneThatDoesNotConvergeIsRecordedAndTheOthersComplete) {
   const std::string out = OutDir(study);
   const testing::RunResult r = testing::RunTehl("sweep -j 2 -q -o '" + out + "' '" + study + "'");
   ASSERT_TRUE(r.exited) << r.err;
-  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;  // a scene not usable: exit 1 (STYLE.md 5)
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;  // a scene not usable: exit 1
   const testing::IndexTable t = ReadIndex(out + "/index.h5");
   ASSERT_EQ(t.status.size(), 3u);
   EXPECT_EQ(t.status[0], "ok");

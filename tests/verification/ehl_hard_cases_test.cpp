@@ -176,7 +176,7 @@ TEST(HardCasesVerification, AStateOfAnotherGridOrNoneIsReportedNotRead) {
 
 // Settings that would be silently ignored or crash later are refused when the solver is
 // made: a coarse grid below 5 nodes, an enum value outside its type, finite_peclet without
-// the thermal film, roughness with both surfaces smooth, a non-finite E'.
+// the thermal film, roughness with both surfaces smooth, a non-finite E', an empty grid.
 TEST(HardCasesVerification, SettingsThatWouldBeIgnoredAreRefusedAtConstruction) {
   const MoesPoint mp{20, 10};
   const UniformGrid grid = mp.Grid(129);
@@ -204,9 +204,26 @@ TEST(HardCasesVerification, SettingsThatWouldBeIgnoredAreRefusedAtConstruction) 
   EXPECT_NO_THROW(make(plain, {}, mp.e_prime_pa));
   try {
     make(plain, coarse, mp.e_prime_pa);
+    ADD_FAILURE() << "coarse_grid_nodes = 0 was accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("coarse_grid_nodes = 0 violates >= 5"), std::string::npos)
-        << e.what();
+    // The option's own key, its value and what is allowed (not the struct's name twice).
+    ASSERT_EQ(e.problems().size(), 1u) << e.what();
+    EXPECT_EQ(e.problems()[0].key, "LineContactSolver::Options::coarse_grid_nodes");
+    EXPECT_EQ(e.problems()[0].value, "0");
+    EXPECT_EQ(e.problems()[0].allowed, ">= 5");
+  }
+  // An empty (default-constructed) grid, with or without the elastic deflection (without it
+  // the solve used to crash).
+  for (bool elastic : {false, true}) {
+    FilmEffects e;
+    e.elastic = elastic;
+    try {
+      const UniformGrid empty;
+      LineContactSolver s(empty, mp.e_prime_pa, oil, e, LineContactSolver::Options{});
+      ADD_FAILURE() << "an empty grid was accepted, elastic " << elastic;
+    } catch (const InputError& err) {
+      EXPECT_EQ(err.problems()[0].key, "grid") << err.what();
+    }
   }
 }
 

@@ -240,7 +240,8 @@ class LineContactSolver {
   // A first guess: Hertz pressure (scaled onto the grid) and h0 from the Moes film fit.
   FilmState InitialGuess(const ContactConditions& c) const;
 
-  // Bad conditions (R, w, um not finite and > 0; T below kMinAbsoluteTemperatureK) and a
+  // Bad conditions (R, w, um not finite and > 0; T outside kMinAbsoluteTemperatureK ..
+  // kMaxTemperatureK) and a
   // state that is null or not of this grid end the solve at once with
   // Termination::kInvalidInput and say why in the Summary's message; nothing is thrown. The
   // solver takes any load (M = 5000 runs converge); case files refuse loads whose Hertz

@@ -1,6 +1,6 @@
 // Geometric validity of a gear pair: every problem found in one pass, each tied to the
-// case-file key a user would change, with the numbers and what to change (STYLE.md
-// section 5). The scene layer attaches file:line; the gear layer knows no files.
+// case-file key a user would change, with the numbers and what to change (tehl/error.hpp).
+// The scene layer attaches file:line; the gear layer knows no files.
 //
 // Errors: impossible or overlapping centre distance, a basic rack whose tip rounding does
 // not fit, undercut (unless allowed), a tip circle inside a base circle, a pointed tooth

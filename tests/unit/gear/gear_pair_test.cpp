@@ -4,9 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+#include <utility>
 
 #include "tehl/error.hpp"
 #include "tehl/gear/involute.hpp"
+#include "tehl/gear/path_of_contact.hpp"
 #include "unit/gear/reference_pairs.hpp"
 
 namespace tehl {
@@ -213,6 +218,40 @@ TEST(GearPair, RejectsValuesNoGearCanHave) {
   ring.internal = true;
   ring.wheel.teeth = 30;
   EXPECT_THROW(GearPair{ring}, InputError);
+}
+
+// Non-finite and physically impossible values of a programmatic spec are input errors at
+// their key, never a domain_error deep inside or a NaN contact ratio; a negative tip radius
+// is not taken as "absent".
+TEST(GearPair, RejectsNonFiniteAndImpossibleValuesAtTheirKeys) {
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::nan("");
+  const std::pair<std::string, std::function<void(GearPairSpec&)>> cases[] = {
+      {"gear.pinion.profile_shift", [&](GearPairSpec& s) { s.pinion.profile_shift = nan; }},
+      {"gear.wheel.profile_shift", [&](GearPairSpec& s) { s.wheel.profile_shift = inf; }},
+      {"gear.module_m", [&](GearPairSpec& s) { s.module_m = inf; }},
+      {"gear.face_width_m", [&](GearPairSpec& s) { s.face_width_m = inf; }},
+      {"gear.addendum_coefficient", [&](GearPairSpec& s) { s.addendum_coefficient = inf; }},
+      {"gear.pinion.tip_radius_m", [&](GearPairSpec& s) { s.pinion.tip_radius_m = -0.037; }},
+      {"gear.wheel.tip_radius_m", [&](GearPairSpec& s) { s.wheel.tip_radius_m = nan; }},
+      {"gear.pinion.youngs_modulus_pa",
+       [&](GearPairSpec& s) { s.pinion.material.youngs_modulus_pa = -206e9; }},
+      {"gear.wheel.poisson_ratio", [&](GearPairSpec& s) { s.wheel.material.poisson_ratio = 0.6; }},
+      {"gear.center_distance_m", [&](GearPairSpec& s) { s.center_distance_m = nan; }},
+  };
+  for (const auto& [key, spoil] : cases) {
+    GearPairSpec s = Seed004Spec();
+    spoil(s);
+    try {
+      GearPair p(s);
+      ADD_FAILURE() << key << " accepted";
+    } catch (const InputError& e) {
+      ASSERT_EQ(e.problems().size(), 1u) << e.what();
+      EXPECT_EQ(e.problems()[0].key, key) << e.what();
+    }
+  }
+  const GearPair pair(Seed004Spec());
+  EXPECT_THROW(PathOfContact(pair, inf), InputError);
+  EXPECT_THROW(PathOfContact(pair, nan), InputError);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// Central finite differences for the derivative tests of the lubricant laws (STYLE.md
-// section 8: every model's derivatives against finite differences).
+// Central finite differences for the derivative tests of the lubricant laws (every model's
+// derivatives against finite differences).
 #pragma once
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // Malformed lubricant files: each problem reported at once, with file:line, key and value
-// (STYLE.md section 5).
+// (tehl/error.hpp).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
