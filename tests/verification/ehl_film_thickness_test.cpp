@@ -1,8 +1,8 @@
 // Isothermal EHL film thickness against the published fits (VALIDATION.md section 3), and the
 // fits themselves against the table printed there. The fits disagree with each other by up to
 // 20 %; VALIDATION.md expects a grid-converged Newton solution inside
-// [0.97 x Pan-Hamrock, 1.03 x Moes] for p_H <= 2 GPa, and H_min/H_c "typically 0.7-0.85" in
-// line contacts at moderate-to-high M (asserted here as the wider 0.6-0.9 band).
+// [0.97 x Pan-Hamrock, 1.03 x Moes] for p_H <= 2 GPa; H_min is held to Pan-Hamrock's H_min
+// fit (H_min/H_c is "typically 0.7-0.85" at moderate-to-high M; see the test).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -119,14 +119,20 @@ TEST_P(FilmThicknessVerification, CentralFilmLiesBetweenPanHamrockAndMoes) {
   const LineContactSolver::Summary sum = ms.solver.SolveSteady(mp.Conditions(), &st);
   ASSERT_TRUE(sum.usable()) << sum.BriefReport();
   const double hc = ms.Hc(st), hmin = ms.Hmin(st);
-  std::printf("M = %g L = %g p_H = %.3f GPa: H_c = %.4f H_min = %.4f (PH %.4f, Moes %.4f), "
-              "H_c/PH = %.4f H_c/Moes = %.4f H_min/H_c = %.4f, %d iterations\n",
-              mp.M, mp.L, mp.Hertz().max_pressure_pa / 1e9, hc, hmin, mp.PanHamrockHc(),
-              mp.MoesHc(), hc / mp.PanHamrockHc(), hc / mp.MoesHc(), hmin / hc, sum.iterations);
+  std::printf(
+      "M = %g L = %g p_H = %.3f GPa: H_c = %.4f H_min = %.4f (PH %.4f, Moes %.4f), "
+      "H_c/PH = %.4f H_c/Moes = %.4f H_min/H_c = %.4f H_min/PH_min = %.4f, %d iterations\n",
+      mp.M, mp.L, mp.Hertz().max_pressure_pa / 1e9, hc, hmin, mp.PanHamrockHc(), mp.MoesHc(),
+      hc / mp.PanHamrockHc(), hc / mp.MoesHc(), hmin / hc, hmin / mp.PanHamrockHmin(),
+      sum.iterations);
   EXPECT_GE(hc, 0.97 * mp.PanHamrockHc());
   EXPECT_LE(hc, 1.03 * mp.MoesHc());
-  EXPECT_GT(hmin / hc, 0.6);
-  EXPECT_LT(hmin / hc, 0.9);
+  // H_min against Pan & Hamrock's own fit for it (VALIDATION.md section 3): measured 1.000 -
+  // 1.044 at these points. (VALIDATION.md's "H_min / H_c typically 0.7-0.85" is for moderate
+  // to high M; at these M = 10-50 the two Pan-Hamrock fits themselves give 0.82-0.93, and the
+  // film 0.82-0.89, so the ratio is held to its lower bound only.)
+  EXPECT_NEAR(hmin / mp.PanHamrockHmin(), 1.0, 0.06);
+  EXPECT_GT(hmin / hc, 0.7);
   EXPECT_LT(sum.load_error, 1e-6);  // VALIDATION.md section 2: load balance 1e-6
 }
 

@@ -4,8 +4,8 @@
 // (a trend check, not an exact law). Steel twin disc of thermal_disc_case.hpp (R = 20 mm,
 // p_H = 0.8 GPa, SAE 40 of seed 004 Table 2: beta = gamma = 0.046 1/K, eta0 = 0.1140574 Pa s,
 // k_f = 0.125 W/(m K)); um sets L_T. Newtonian, steady, 257 nodes, 11 across the film.
-// The fast binary runs a corner subset; the slow one (TEHL_SLOW_TESTS) the whole table of
-// docs/validation.md (bench/thermal_gupta_table.cpp prints it).
+// The fast binary runs the rolling points up to L_T = 3; the slow one (TEHL_SLOW_TESTS) the
+// whole table of docs/validation.md (bench/thermal_gupta_table.cpp prints it).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -56,11 +56,12 @@ double Deviation(double l_t, double srr) {
   return ratio / phi - 1.0;
 }
 
-// Disabled: the sliding corners do not converge yet (docs/thermal.md, "Open points").
-TEST(ThermalGupta, DISABLED_CornersWithinFifteenPercent) {
-  for (double l_t : {0.3, 3.0})
-    for (double srr : {0.0, 1.0})
-      EXPECT_LE(std::abs(Deviation(l_t, srr)), 0.15) << "L_T " << l_t << ", SRR " << srr;
+// Rolling (SRR = 0) up to L_T = 3, where the model meets phi_T: -0.8, -2.4, -6.6 and -13.0 %
+// (docs/validation.md section 6). At L_T = 5 (-16 %) and with sliding it does not: the whole
+// table is the slow test below, which fails on those points and stays visible as such.
+TEST(ThermalGupta, RollingWithinFifteenPercentUpToThermalLoadingThree) {
+  for (double l_t : {0.1, 0.3, 1.0, 3.0})
+    EXPECT_LE(std::abs(Deviation(l_t, 0.0)), 0.15) << "L_T " << l_t;
 }
 
 #ifdef TEHL_SLOW_TESTS
