@@ -19,10 +19,14 @@ void FilmEnergySystem::ComputeMassFluxes(const FilmEnergyInputs& in,
   volume_.resize(n_, nz_);
   mass_.resize(n_, nz_);
   dmass_dt_.resize(n_, nz_);
+  // The size of the storage rates' terms (which cancel in a film that closes as its oil
+  // compresses): the scale of the mass defect where there is no flow.
+  double storage_scale = 0;
   for (int i = 0; i < n_; ++i) {
     const double dxc = source_[0].CellLength(i);
     const double dhdt = f.dhdt_m_s.size() ? f.dhdt_m_s[i] : 0.0;
     const double dpdt = f.dpdt_pa_s.size() ? f.dpdt_pa_s[i] : 0.0;
+    double column_terms = 0;
     for (int j = 0; j < nz_; ++j) {
       const double dxi = (j == 0 || j == nz_ - 1) ? 0.5 * dxi_ : dxi_;
       volume_(i, j) = f.h_m[i] * dxc * dxi;
@@ -31,7 +35,11 @@ void FilmEnergySystem::ComputeMassFluxes(const FilmEnergyInputs& in,
       const double dtdt = transient ? (t_iter(i, j) - (*in.previous_t_k)(i, j)) / in.dt_s : 0.0;
       dmass_dt_(i, j) =
           dxc * dxi * (rho(i, j) * dhdt + f.h_m[i] * (drho_dp(i, j) * dpdt + drho_dt(i, j) * dtdt));
+      column_terms += dxc * dxi *
+                      (std::abs(rho(i, j) * dhdt) + f.h_m[i] * (std::abs(drho_dp(i, j) * dpdt) +
+                                                                std::abs(drho_dt(i, j) * dtdt)));
     }
+    storage_scale = std::max(storage_scale, column_terms);
   }
   // x-face mass fluxes: face i - 1/2 is row i; the end faces carry the end node's flux.
   fx_.resize(n_ + 1, nz_);
@@ -54,7 +62,9 @@ void FilmEnergySystem::ComputeMassFluxes(const FilmEnergyInputs& in,
   // marching from the inlet face, by a uniform velocity across the film: the total through face
   // i + 1 is the total through face i minus the column's storage rate. The largest correction
   // relative to the mass flow is reported as the mass defect of the given field.
-  double flow_scale = 0;
+  // (Relative to the mass flow, or to the storage rates' terms in a film at rest; 0 where
+  // nothing moves.)
+  double flow_scale = storage_scale;
   for (int i = 0; i <= n_; ++i) flow_scale = std::max(flow_scale, std::abs(fx_.row(i).sum()));
   mass_defect_ = 0;
   double total = fx_.row(0).sum();
@@ -63,7 +73,7 @@ void FilmEnergySystem::ComputeMassFluxes(const FilmEnergyInputs& in,
     const double correction = total - fx_.row(i + 1).sum();
     for (int j = 0; j < nz_; ++j)
       fx_(i + 1, j) += correction * ((j == 0 || j == nz_ - 1) ? 0.5 * dxi_ : dxi_);
-    mass_defect_ = std::max(mass_defect_, std::abs(correction) / std::max(flow_scale, 1e-300));
+    if (flow_scale > 0) mass_defect_ = std::max(mass_defect_, std::abs(correction) / flow_scale);
   }
   // Cross-film fluxes from continuity, marching up from surface 1 (impermeable); with the
   // corrected x fluxes each column balances, so surface 2 is impermeable too (to round-off,

@@ -165,7 +165,8 @@ class FilmEnergySolver {
     int factorizations = 0;    // KLU numeric factorizations among them [-]
     int krylov_iterations = 0;  // GMRES iterations of the finite-Peclet steps [-]
     double max_change_k = -1;  // max |T| change of the last iteration (0 for a linear problem) [K]
-    double mass_defect = 0;    // largest face-flux correction to continuity / mass flow [-]
+    double mass_defect = 0;    // largest face-flux correction to continuity / mass flow (a film
+                               //   at rest: / its storage rates' terms; 0 when nothing moves) [-]
     EnergyBalance balance;
     double wall_time_s = 0;  // [s]
     bool usable() const { return termination == Termination::kConverged; }

@@ -212,6 +212,95 @@ TEST(FilmEnergySolver, HeatingThatFallsWithTemperatureGivesTheAnalyticProfile) {
   EXPECT_LT(errors.back(), 2e-3);
 }
 
+// Compression heating -(T/rho)(drho/dT) Dp/Dt (seed 004 eq. 9): a film at rest between walls
+// held at T0, the pressure rising everywhere at D = dp/dt. With the Dowson-Higginson density
+// rho = rho0 f(p) (1 - e (T - T0)) the source is c(T) T, c(T) = e D / (1 - e (T - T0)), so
+//   k T'' + c(T) T = 0,  T(0) = T(h) = T0,
+// which without the expansion's T-dependence is T0 cos(l (z - h/2)) / cos(l h/2), l^2 = e D/k.
+// Solved here by shooting: RK4 on fine steps from z = 0 with the slope bisected until T(h) =
+// T0 (an independent 1-D solution, not the solver's stencil). The film closes at dh/dt =
+// -h (drho/dp / rho) dp/dt so that the compressing oil moves no mass (a film of fixed h would
+// need an inflow, and the solver's continuity correction would convect heat). D = 3e12 Pa/s in a 10
+// um film gives l h/2 = 0.6: a rise of about 66 K at mid-film. A sign error of the term would cool
+// the film; one that ignored T in the source (c T0) would give 12 % less rise.
+TEST(FilmEnergySolver, CompressionHeatingOfAFilmAtRestGivesTheShootingSolution) {
+  const double h = 1e-5, e = 6.5e-4, dpdt = 3e12;
+  const Lubricant oil = testing::EnergyTestOil(e, kT0);  // k(0) = 0.14 W/(m K)
+  const double k = oil.conductivity().Evaluate(0.0).k_w_mk;
+  const auto reference = [&](int nz) {
+    const int per_cell = 400, steps = per_cell * (nz - 1);
+    const double dz = h / steps;
+    auto shoot = [&](double slope, std::vector<double>* nodes) {
+      double t = kT0, dt = slope;
+      auto f = [&](double tt) { return -e * dpdt / (1 - e * (tt - kT0)) * tt / k; };
+      if (nodes) nodes->assign(1, t);
+      for (int m = 0; m < steps; ++m) {  // RK4 for (T, T')
+        const double k1t = dt, k1d = f(t);
+        const double k2t = dt + 0.5 * dz * k1d, k2d = f(t + 0.5 * dz * k1t);
+        const double k3t = dt + 0.5 * dz * k2d, k3d = f(t + 0.5 * dz * k2t);
+        const double k4t = dt + dz * k3d, k4d = f(t + dz * k3t);
+        t += dz / 6 * (k1t + 2 * k2t + 2 * k3t + k4t);
+        dt += dz / 6 * (k1d + 2 * k2d + 2 * k3d + k4d);
+        if (nodes && (m + 1) % per_cell == 0) nodes->push_back(t);
+      }
+      return t;
+    };
+    // The slope at z = 0 [K/m]: 0 ends below T0 (T'' < 0), 1e8 far above it (the linear
+    // solution's is T0 l tan(l h/2) = 2.5e7); an overshoot that runs away counts as above.
+    double lo = 0, hi = 1e8;
+    for (int it = 0; it < 200; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (!(shoot(mid, nullptr) <= kT0) ? hi : lo) = mid;
+    }
+    std::vector<double> nodes;
+    shoot(0.5 * (lo + hi), &nodes);
+    return nodes;
+  };
+  const UniformGrid g(0.0, 1e-4, 5);
+  std::vector<double> errors;
+  double rise = 0;
+  for (int nz : {11, 21, 41}) {
+    const std::vector<double> want = reference(nz);
+    rise = want[(nz - 1) / 2] - kT0;
+    FilmFlowField f;
+    f.p_pa = Eigen::VectorXd::Zero(g.size());
+    f.h_m = Eigen::VectorXd::Constant(g.size(), h);
+    f.dpdt_pa_s = Eigen::VectorXd::Constant(g.size(), dpdt);
+    // The film closes as the oil compresses, so that no mass moves: d(rho h)/dt = 0 in every
+    // cell (drho/dp / rho does not depend on T for this density law).
+    const DensityValue d = oil.density().Evaluate(0.0, kT0);
+    f.dhdt_m_s = Eigen::VectorXd::Constant(g.size(), -h * d.drho_dp / d.rho_kg_m3 * dpdt);
+    f.u_m_s = Eigen::MatrixXd::Zero(g.size(), nz);
+    f.heating_w_m3 = Eigen::MatrixXd::Zero(g.size(), nz);
+    FilmEnergySolver solver(g, oil, Bronze(), Bronze(), kT0,
+                            Opts(nz, FilmEnergySolver::Walls::kFixedTemperature));
+    FilmTemperature t;
+    const auto sum = solver.Solve(f, nullptr, 0.0, &t);
+    ASSERT_TRUE(sum.usable()) << sum.BriefReport();
+    double worst = 0;
+    for (int i = 0; i < g.size(); ++i)
+      for (int j = 0; j < nz; ++j) worst = std::max(worst, std::abs(t.t_k(i, j) - want[j]));
+    EXPECT_LT(sum.mass_defect, 1e-12) << nz;  // the field conserves mass
+    errors.push_back(worst / rise);
+    // The heat the compression makes leaves through the walls.
+    EXPECT_GT(sum.balance.compression_w_m, 0.0);
+    EXPECT_LT(sum.balance.RelativeError(), 1e-6) << nz;
+  }
+  // The closed form without the expansion's T-dependence, as a check of the scale.
+  const double l = std::sqrt(e * dpdt / k);
+  EXPECT_NEAR(rise, kT0 * (1 / std::cos(l * h / 2) - 1), 0.1 * rise);
+  EXPECT_GT(rise, 50.0);
+  for (size_t i = 1; i < errors.size(); ++i) {
+    const double order = std::log2(errors[i - 1] / errors[i]);
+    std::printf(
+        "compression heating (rise %.2f K), refinement %zu: relative error %.3e, "
+        "order %.3f\n",
+        rise, i, errors[i], order);
+    EXPECT_GT(order, 1.8) << i;
+  }
+  EXPECT_LT(errors.back(), 2e-3);
+}
+
 TEST(FilmEnergySolver, CouettePoiseuilleProfileConvergesAtSecondOrderInFilmNodes) {
   // Quartic exact profile (ParallelFilm::Exact with P = 2U, no reverse flow). The three-point
   // stencil applied to a quartic gives T'' + (dxi^2/12) T'''' exactly, and T'''' = -2 b^2 eta/k
