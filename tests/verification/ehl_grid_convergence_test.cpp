@@ -108,9 +108,13 @@ TEST(GridConvergenceVerification, SecondOrderFrom257To4097Nodes) {
 
 // The Hertzian-edge estimate of the central film's grid deficit (include/tehl/ehl/
 // hertz_edge.hpp) against the grid-converged films of docs/validation.md: M = 500, L = 2
-// (Richardson H_c 1.1659, section 3.1) on 1025 and 4097 nodes, and M = 20, L = 10 (H_c
-// 4.3450, section 4) on 257 and 513 nodes. The estimate, from the computed film alone, bounds
-// the true deficit and is within a factor of 4 of it.
+// (H_c 1.1659, section 3.1) on 1025 and 4097 nodes, and M = 20, L = 10 (H_c 4.3450, section
+// 4) on 257 and 513 nodes. Those converged films are this solver's own, Richardson-extrapolated
+// from its finest grids (16385 nodes for M = 500, 4097 for M = 20; observed order 2.0). The
+// estimate's
+// constant was fitted on the M = 20, L = 10 series, so the M = 500 points are the independent
+// check. The estimate, from the computed film alone, bounds the true deficit and is within the
+// factor of 3 docs/validation.md states (measured 2.8, 2.2, 1.04, 1.02).
 TEST(GridConvergenceVerification, HertzEdgeEstimateBoundsTheFilmDeficit) {
   struct Point {
     MoesPoint mp;
@@ -130,7 +134,7 @@ TEST(GridConvergenceVerification, HertzEdgeEstimateBoundsTheFilmDeficit) {
         "M = %g, L = %g, n = %d: edge %.2f cells, estimated deficit %.3g %%, true %.3g %%\n",
         pt.mp.M, pt.mp.L, pt.n, e.width_cells, 100 * e.film_deficit, 100 * deficit);
     EXPECT_LE(deficit, e.film_deficit);
-    EXPECT_GE(deficit, e.film_deficit / 4);
+    EXPECT_GE(deficit, e.film_deficit / 3);
   }
 }
 

@@ -57,7 +57,7 @@ Film Solve(const ThermalDisc& d, double x_start_b) {
   return {s.CentralFilm(grid), EstimateInletTruncation(s.p_pa, s.h_m, in)};
 }
 
-// Grubin's estimate of the h_c deficit within -20 % / +25 % of the measured one, from 0.4 to
+// Grubin's estimate of the h_c deficit within -10 % / +15 % of the measured one, from 0.4 to
 // 1.2 GPa and 0.3 to 5 m/s, on inlets at -4.5 b (the default) and -9 b. Measured when the
 // estimate was introduced: estimate / measured 0.96-1.07 here, 0.96-1.17 on R = 10 mm discs
 // at 20-400 kN/m and 0.2-5 m/s (docs/results.md, "The inlet note"). The same band for the
@@ -84,9 +84,9 @@ TEST(InletTruncationVerification, EstimateFollowsTheMeasuredDeficit) {
           pt.hertz_pa * 1e-9, pt.um_m_s, x0, f.inlet.missing_pressure_pa * 1e-6,
           100 * f.inlet.film_deficit, 100 * measured);
       ASSERT_GT(measured, 0.0);
-      EXPECT_GT(f.inlet.film_deficit / measured, 0.8)
+      EXPECT_GT(f.inlet.film_deficit / measured, 0.9)
           << pt.hertz_pa << " " << pt.um_m_s << " " << x0;
-      EXPECT_LT(f.inlet.film_deficit / measured, 1.25)
+      EXPECT_LT(f.inlet.film_deficit / measured, 1.15)
           << pt.hertz_pa << " " << pt.um_m_s << " " << x0;
       const InletTruncationInputs in = DiscInlet(d, x0 * d.half_width_m());
       const InletTruncation p = PredictInletTruncation(
@@ -94,8 +94,8 @@ TEST(InletTruncationVerification, EstimateFollowsTheMeasuredDeficit) {
                                     d.load_n_per_m(), d.radius_m, d.e_prime_pa, true));
       ASSERT_TRUE(p.estimated);
       std::printf("  predicted before solving: %.3f %%\n", 100 * p.film_deficit);
-      EXPECT_GT(p.film_deficit / measured, 0.8) << pt.hertz_pa << " " << pt.um_m_s << " " << x0;
-      EXPECT_LT(p.film_deficit / measured, 1.25) << pt.hertz_pa << " " << pt.um_m_s << " " << x0;
+      EXPECT_GT(p.film_deficit / measured, 0.9) << pt.hertz_pa << " " << pt.um_m_s << " " << x0;
+      EXPECT_LT(p.film_deficit / measured, 1.15) << pt.hertz_pa << " " << pt.um_m_s << " " << x0;
     }
   }
 }

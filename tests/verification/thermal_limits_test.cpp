@@ -46,8 +46,8 @@ Solved Solve(const ThermalDisc& d,
 TEST(ThermalLimits, SlowPureRollingIsIsothermal) {
   // u1 = u2 = 0.05 m/s: no sliding, and L_T = beta eta0 um^2 / k_f = 0.046 x 0.114 x 0.05^2 /
   // 0.125 = 1.0e-4 (VALIDATION.md section 4), so phi_T = 1 - 0.1 L_T^0.64 = 0.9997: the
-  // thermal film equals the isothermal one to 0.03 %; asserted within 1 % (task requirement),
-  // the temperature rise below 1 K.
+  // thermal film equals the isothermal one to 0.03 % (the requirement asks 1 %; asserted to
+  // 0.2 %, measured 0.01 %), the temperature rise below 1 K.
   ThermalDisc d;
   d.um_m_s = 0.05;
   const Solved iso = Solve(d, 257, false);
@@ -58,8 +58,8 @@ TEST(ThermalLimits, SlowPureRollingIsIsothermal) {
   EXPECT_GE(th.rise_k, 0.0);
   EXPECT_LT(th.state.temperature.t1_k.maxCoeff() - d.Conditions(Sae40()).temperature_k, 1.0);
   EXPECT_LT(th.state.temperature.t2_k.maxCoeff() - d.Conditions(Sae40()).temperature_k, 1.0);
-  EXPECT_NEAR(th.hc_m / iso.hc_m, 1.0, 0.01);
-  EXPECT_NEAR(th.state.MinFilm() / iso.state.MinFilm(), 1.0, 0.01);
+  EXPECT_NEAR(th.hc_m / iso.hc_m, 1.0, 0.002);
+  EXPECT_NEAR(th.state.MinFilm() / iso.state.MinFilm(), 1.0, 0.002);
   std::printf("pure rolling 0.05 m/s: dT_max = %.3g K, h_c %.5f / %.5f um, h_min %.5f / %.5f um\n",
               th.rise_k, th.hc_m * 1e6, iso.hc_m * 1e6, th.state.MinFilm() * 1e6,
               iso.state.MinFilm() * 1e6);

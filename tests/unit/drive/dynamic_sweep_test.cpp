@@ -93,7 +93,6 @@ TEST(DynamicSweep, LightDampingSeparatesTheTeethNearResonance) {
   // force is 0, not the damper's pull at the instant of parting (x = 0, x' < 0).
   ASSERT_EQ(r.back_flank_fraction, 0.0);
   EXPECT_EQ(r.min_force_n, 0.0);
-  for (const DynamicSample& s : r.samples) EXPECT_GE(s.force_n, 0.0) << "phase " << s.phase_m;
   int zero = 0;
   for (const DynamicSample& s : r.samples)
     zero += s.state == ContactState::kSeparated && s.force_n == 0;
