@@ -123,6 +123,7 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
   Summary sum;
   int total = 0, krylov = 0, stages = 0, coupling = 0;
   double change_t = -1, change_f = 0, change_p = 1, balance = -1;
+  EnergyBalance energy;
   Eigen::VectorXd p_last;
   bool settled = false;
   std::string energy_failure, newton_message;
@@ -238,6 +239,7 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
         e.summary.message = ex.what();
       }
       balance = e.summary.balance.RelativeError();
+      energy = e.summary.balance;
       change_t = e.max_change_k;
       if (newton_possible && e.ok && !e.limited) {
         if (change_t < best_change) {
@@ -278,6 +280,7 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
     coupling += nt.result.map_evaluations;
     change_t = nt.result.residual;
     balance = nt.balance;
+    energy = nt.energy;
     settled = nt.result.converged && nt.pressure.usable();
     sum = nt.pressure;  // the pressure solve at the returned temperature
     sum.coupling_newton_iterations = nt.result.newton_iterations;
@@ -323,6 +326,7 @@ LineContactSolver::Summary LineContactSolver::Impl::CoupleOnce(const ContactCond
   // A failed energy solve can leave a non-finite temperature and with it a non-finite
   // balance: reported as not computed (-1), never as NaN.
   sum.energy_balance_error = std::isfinite(balance) ? balance : -1.0;
+  if (std::isfinite(balance)) sum.energy = energy;
   sum.wall_time_s = std::chrono::duration<double>(Clock::now() - t0).count();
   return sum;
 }

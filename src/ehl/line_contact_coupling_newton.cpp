@@ -56,6 +56,7 @@ LineContactSolver::Impl::CouplingNewton LineContactSolver::Impl::NewtonCoupling(
     field_->SetCouplingState(x);
     if (!e.ok) return false;
     out.balance = e.summary.balance.RelativeError();
+    out.energy = e.summary.balance;
     work = trial;
     return true;
   };

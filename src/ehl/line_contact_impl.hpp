@@ -185,6 +185,7 @@ class LineContactSolver::Impl {
     internal::FixedPointNewtonResult result;
     Summary pressure;     // the last pressure solve (at the returned temperature)
     double balance = -1;  // energy balance error of the last energy solve [-]
+    EnergyBalance energy;  // and its budget [W/m]
   };
   // Newton-Krylov on x = G(x), x = the film temperature (and w log f of the Eyring factor in
   // Ree-Eyring runs), G = the energy solve (and the factor) at the pressure solved with the
