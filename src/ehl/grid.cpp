@@ -24,6 +24,14 @@ UniformGrid::UniformGrid(double x_start_m, double x_end_m, int n) {
 }
 
 UniformGrid UniformGrid::AroundHertz(double b, int n, double start_b, double end_b) {
+  ProblemList bad;
+  if (!(b > 0) || !std::isfinite(b))
+    bad.Add({"", 0, "UniformGrid::AroundHertz half_width_m", internal::FormatReal(b),
+             "must be finite and > 0 [m]", "the Hertz half-width b of the largest load"});
+  if (!(end_b > start_b) || !std::isfinite(start_b) || !std::isfinite(end_b))
+    bad.Add({"", 0, "UniformGrid::AroundHertz end_b", internal::FormatReal(end_b),
+             "must exceed start_b = " + internal::FormatReal(start_b), "start_b < end_b"});
+  bad.ThrowIfAny();
   return UniformGrid(start_b * b, end_b * b, n);
 }
 

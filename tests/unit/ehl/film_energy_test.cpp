@@ -585,8 +585,11 @@ TEST(FilmEnergySolver, SolidsKeepTheirHeatWhenTheHeatingStops) {
     std::printf("dt %.0e s: surface 1 keeps %.4f of its %.2f K rise (1-D: %.4f)\n", dt, kept, rise,
                 one_d);
     // The flux is not uniform along the path (measured 0.988, 0.927), and the film draws
-    // heat back from the walls during the step: the uniform-flux value within 0.04.
-    EXPECT_NEAR(kept, one_d, 0.04);
+    // heat back from the walls during the step: the surface cools by at least half the 1-D
+    // drop (solids that kept all their heat would fail) and by at most 0.04 more than it
+    // (quasi-steady solids, 0.84 and 0.35, would fail).
+    EXPECT_LT(kept, 1 - 0.5 * (1 - one_d));
+    EXPECT_GT(kept, one_d - 0.04);
   }
 }
 
