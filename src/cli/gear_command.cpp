@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/gear_film_estimates.hpp"
 #include "cli/number_format.hpp"
 #include "io/atomic_file.hpp"
 #include "scene/case_reader.hpp"
@@ -364,6 +365,12 @@ Command AddGearCommand(CLI::App& app) {
             const FlashModel flash{internal::ReadContactSolids(doc),
                                    doc.Bool("effects", "finite_peclet")};
             if (args->mu) Flash(o, *c, flash, *args->mu);
+            {
+              // The lubricant's problems belong to `tehl run`; the report goes without them.
+              internal::Document film_doc = internal::ReadCaseDocument(args->case_file);
+              const internal::FilmCase film = internal::ReadFilmCase(film_doc);
+              FilmEstimates(o, *c, film, CompositeWavinessRq(film_doc));
+            }
             for (const auto& w : c->warnings) o << "warning: " << w.ToString() << "\n";
             std::cout << o.str();
             if (!args->csv.empty()) WriteCsv(args->csv, *c, args->points, flash, args->mu);

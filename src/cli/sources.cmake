@@ -7,6 +7,7 @@ list(APPEND TEHL_CLI_SOURCES
   src/cli/run_notes.cpp
   src/cli/lubricant_command.cpp
   src/cli/gear_command.cpp
+  src/cli/gear_film_estimates.cpp
   src/cli/plot_command.cpp
   src/cli/python_script.cpp
   src/cli/sweep_command.cpp

@@ -265,6 +265,37 @@ TEST_F(GearCommand, AsymmetricReportGivesTheFormCircleOfEachFlank) {
   }
 }
 
+// The film estimates at A .. E. At the pitch point of seed 004 (SAE 40, 10 kW, 1000 rpm)
+// VALIDATION.md section 5 gives Moes' h_c = 0.88 um and Pan-Hamrock's 0.73 um; the rough case
+// (0.1 um sinusoidal waviness on both surfaces: Rq = sqrt(2) 0.1 / sqrt(2) = 0.1 um) has
+// lambda = h_min / 0.1 um on every row.
+TEST_F(GearCommand, FilmEstimatesAtThePointsOfThePath) {
+  const auto row = [](const std::string& out, const std::string& point) {
+    const size_t head = out.find("Film estimates");
+    EXPECT_NE(head, std::string::npos) << out;
+    const size_t at = out.find("\n  " + point + " ", head);
+    EXPECT_NE(at, std::string::npos) << out;
+    std::istringstream in(out.substr(at + 4 + point.size()));
+    std::vector<double> v(9, 0.0);
+    for (double& x : v) in >> x;  // s, R, um, w, p_H, h_c PH, h_min PH, h_c Moes, lambda
+    return v;
+  };
+  const Result r = Tehl("gear cases/seed004_sae40.toml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::vector<double> c = row(r.out, "C");
+  EXPECT_NEAR(c[1], 8.978, 0.001);                     // R [mm] (VALIDATION.md section 5)
+  EXPECT_NEAR(c[4], 521.9, 0.1);                       // p_H [MPa]
+  EXPECT_NEAR(c[5], 0.73, 0.005);                      // Pan-Hamrock h_c [um]
+  EXPECT_NEAR(c[7], 0.88, 0.005);                      // Moes h_c [um]
+  EXPECT_EQ(r.out.find("lambda"), std::string::npos);  // smooth surfaces
+  const Result rough = Tehl("gear cases/seed004_sae40_rough.toml");
+  ASSERT_EQ(rough.code, 0) << rough.err;
+  for (const char* p : {"A", "B", "C", "D", "E"}) {
+    const std::vector<double> v = row(rough.out, p);
+    EXPECT_NEAR(v[8], v[6] / 0.1, 0.01) << p;
+  }
+}
+
 TEST_F(GearCommand, EveryCaseOfTheRepositoryIsValid) {
   const Result r = Tehl(
       "case --check cases/seed004_sae40.toml cases/seed004_sae90.toml "
