@@ -228,6 +228,32 @@ int RunContact(const RunArgs& a) {
   return kExitOk;
 }
 
+// --at P1,P2,...: each point in turn (every point is checked before any is solved); the exit
+// code is the worst.
+int RunPoints(const RunArgs& a) {
+  std::vector<std::string> points;
+  std::string item;
+  for (char ch : a.at + ",") {
+    if (ch != ',') {
+      item += ch;
+    } else if (!item.empty()) {
+      points.push_back(item);
+      item.clear();
+    }
+  }
+  // Every point is checked (exit 2 on a bad one) before any is solved.
+  if (points.size() > 1)
+    for (const std::string& p : points) (void)ContactCaseAtPoint(a.case_path, p, a.output_dir);
+  int worst = kExitOk;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (i > 0) std::printf("\n");
+    RunArgs one = a;
+    one.at = points[i];
+    worst = std::max(worst, RunContact(one));
+  }
+  return worst;
+}
+
 }  // namespace
 
 Command AddRunCommand(CLI::App& app) {
@@ -243,12 +269,13 @@ Command AddRunCommand(CLI::App& app) {
                   "Mesh cycle: write a checkpoint every N steps (0 = never)")
       ->check(CLI::Range(0, 10000000));
   sub->add_option("--at", args->at,
-                  "Gear case: the steady film at one point of the path instead of the cycle: A, "
-                  "B, C, D, E or a distance from A (2.5mm); writes NAME_at_POINT.toml, the "
-                  "[contact] case of that point, beside its results")
+                  "Gear case: the steady film at points of the path instead of the cycle: A, "
+                  "B, C, D, E or a distance from A (2.5mm), several separated by commas "
+                  "(A,C,E); writes NAME_at_POINT.toml, the [contact] case of each point, beside "
+                  "its results")
       ->excludes("--resume");
   return {sub, [args]() {
-            if (!args->at.empty()) return RunContact(*args);
+            if (!args->at.empty()) return RunPoints(*args);
             // The scene is chosen by the section the file has; each scene reports every
             // problem of its own (a file with neither section is reported by the contact
             // scene, which names both).

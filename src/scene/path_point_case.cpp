@@ -92,9 +92,9 @@ std::string Literal(const std::string& v) { return internal::FormatValue(interna
 
 }  // namespace
 
-PathPointCase WriteContactCaseAtPoint(const std::string& gear_case_path,
-                                      const std::string& at,
-                                      const std::string& output_dir) {
+PathPointCase ContactCaseAtPoint(const std::string& gear_case_path,
+                                 const std::string& at,
+                                 const std::string& output_dir) {
   Document doc = internal::ReadCaseDocument(gear_case_path);
   if (doc.problems().empty() && !doc.HasSection("gear"))
     doc.Problem("gear", "", "a point of the path needs a [gear] pair (--at)",
@@ -198,7 +198,15 @@ PathPointCase WriteContactCaseAtPoint(const std::string& gear_case_path,
   text = internal::RemoveCaseSections(
       text, {"gear", "gear.pinion", "gear.wheel", "operating", "dynamics", "motor"});
   text = internal::ApplyCaseOverrides("[contact]\n" + text, o);
-  internal::WriteTextAtomically(out.case_path, head + text);
+  out.case_text = head + text;
+  return out;
+}
+
+PathPointCase WriteContactCaseAtPoint(const std::string& gear_case_path,
+                                      const std::string& at,
+                                      const std::string& output_dir) {
+  PathPointCase out = ContactCaseAtPoint(gear_case_path, at, output_dir);
+  internal::WriteTextAtomically(out.case_path, out.case_text);
   return out;
 }
 

@@ -24,8 +24,15 @@ struct PathPointCase {
   int pairs_in_contact = 0;       // tooth pairs in contact there [-]
   bool internal = false;          // internal pair: body 2 of the case is a plane, R carries
                                   //   the concave ring's curvature
-  std::string case_path;          // the [contact] case written: DIR/NAME_at_TAG.toml
+  std::string case_path;          // where the [contact] case goes: DIR/NAME_at_TAG.toml
+  std::string case_text;          // the [contact] case
 };
+
+// Reads the gear case and builds the [contact] case of the point `at` (below), without
+// writing it.
+PathPointCase ContactCaseAtPoint(const std::string& gear_case_path,
+                                 const std::string& at,
+                                 const std::string& output_dir);
 
 // Reads the gear case, builds the [contact] case of the point `at` and writes it (creating
 // the folder). `at`: "A" … "E" (B and D on their single-contact side, where the pair carries

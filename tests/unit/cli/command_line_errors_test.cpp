@@ -306,6 +306,17 @@ TEST(CommandLineErrors, APointOffThePathIsBadInput) {
     EXPECT_NE(r.err.find("--at"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("allowed: "), std::string::npos) << r.err;
   }
+  // Several points: all are checked before any is solved, so a bad second point leaves
+  // nothing of the first behind.
+  {
+    const testing::RunResult several =
+        testing::RunTehl("run -q '" + gear + "' -o '" + dir + "' --at A,X");
+    ASSERT_TRUE(several.exited);
+    EXPECT_EQ(several.exit_code, 2) << several.err;
+    EXPECT_NE(several.err.find("\"X\""), std::string::npos) << several.err;
+    EXPECT_FALSE(fs::exists(dir + "/pair_at_A.toml"));
+    EXPECT_FALSE(fs::exists(dir + "/pair_at_A_steps.csv"));
+  }
   testing::RunResult r = testing::RunTehl("run -q '" + gear + "' --at C --resume");
   ASSERT_TRUE(r.exited);
   EXPECT_EQ(r.exit_code, 2) << r.err;
