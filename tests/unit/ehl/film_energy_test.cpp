@@ -31,6 +31,17 @@ FilmEnergySolver::Options Opts(int nz, FilmEnergySolver::Walls walls) {
   return o;
 }
 
+// A steady solve of `f` between walls held at T0 (the analytic film tests).
+FilmEnergySolver::Summary SolveBetweenFixedWalls(const UniformGrid& g,
+                                                 const Lubricant& oil,
+                                                 int nz,
+                                                 const FilmFlowField& f,
+                                                 FilmTemperature* t) {
+  FilmEnergySolver solver(g, oil, Bronze(), Bronze(), kT0,
+                          Opts(nz, FilmEnergySolver::Walls::kFixedTemperature));
+  return solver.Solve(f, nullptr, 0.0, t);
+}
+
 // A fully developed film between fixed walls: h, dp/dx and u(xi) the same at every x, with
 // u = U xi + P xi (1 - xi) and heating eta (du/dz)^2, eta = 1 Pa s, h = 1 um, U = 10 m/s.
 struct ParallelFilm {
@@ -144,10 +155,8 @@ TEST(FilmEnergySolver, ConductionAlongXInAFilmAtRestGivesTheSeparableSolution) {
       for (int j = 0; j < nz; ++j)
         f.heating_w_m3(i, j) =
             g_w_m3 * (1 + std::cos(M_PI * g.x(i) / length)) * std::sin(M_PI * j / (nz - 1.0));
-    FilmEnergySolver solver(g, oil, Bronze(), Bronze(), kT0,
-                            Opts(nz, FilmEnergySolver::Walls::kFixedTemperature));
     FilmTemperature t;
-    const auto sum = solver.Solve(f, nullptr, 0.0, &t);
+    const auto sum = SolveBetweenFixedWalls(g, oil, nz, f, &t);
     ASSERT_TRUE(sum.usable()) << sum.BriefReport();
     double worst = 0;
     for (int i = 0; i < n; ++i)
@@ -188,10 +197,8 @@ TEST(FilmEnergySolver, HeatingThatFallsWithTemperatureGivesTheAnalyticProfile) {
     f.heating_w_m3 = Eigen::MatrixXd::Constant(g.size(), nz, heating);
     f.heating_decay_1_k = Eigen::MatrixXd::Constant(g.size(), nz, beta);
     f.heating_reference_t_k = Eigen::MatrixXd::Constant(g.size(), nz, kT0);
-    FilmEnergySolver solver(g, oil, Bronze(), Bronze(), kT0,
-                            Opts(nz, FilmEnergySolver::Walls::kFixedTemperature));
     FilmTemperature t;
-    const auto sum = solver.Solve(f, nullptr, 0.0, &t);
+    const auto sum = SolveBetweenFixedWalls(g, oil, nz, f, &t);
     ASSERT_TRUE(sum.usable()) << sum.BriefReport();
     EXPECT_GT(sum.iterations, 1);  // nonlinear: the source is relinearized about each iterate
     double worst = 0;
@@ -272,10 +279,8 @@ TEST(FilmEnergySolver, CompressionHeatingOfAFilmAtRestGivesTheShootingSolution) 
     f.dhdt_m_s = Eigen::VectorXd::Constant(g.size(), -h * d.drho_dp / d.rho_kg_m3 * dpdt);
     f.u_m_s = Eigen::MatrixXd::Zero(g.size(), nz);
     f.heating_w_m3 = Eigen::MatrixXd::Zero(g.size(), nz);
-    FilmEnergySolver solver(g, oil, Bronze(), Bronze(), kT0,
-                            Opts(nz, FilmEnergySolver::Walls::kFixedTemperature));
     FilmTemperature t;
-    const auto sum = solver.Solve(f, nullptr, 0.0, &t);
+    const auto sum = SolveBetweenFixedWalls(g, oil, nz, f, &t);
     ASSERT_TRUE(sum.usable()) << sum.BriefReport();
     double worst = 0;
     for (int i = 0; i < g.size(); ++i)
